@@ -1,0 +1,232 @@
+#include "vrrw_trajectory/csv.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace vrrw_trajectory
+{
+namespace
+{
+const char* const kVelocitySuffix = "_vel";
+
+std::string trim(const std::string& text)
+{
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos)
+    return "";
+  const auto last = text.find_last_not_of(" \t\r");
+  return text.substr(first, last - first + 1);
+}
+
+std::vector<std::string> splitCells(const std::string& line)
+{
+  std::vector<std::string> cells;
+  std::string::size_type begin = 0;
+  while (true)
+  {
+    const auto comma = line.find(',', begin);
+    cells.push_back(trim(line.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin)));
+    if (comma == std::string::npos)
+      return cells;
+    begin = comma + 1;
+  }
+}
+
+std::string formatNumber(double value)
+{
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  return std::string(buffer, result.ptr);
+}
+
+class CsvParser
+{
+public:
+  CsvParser(std::istream& in, const std::string& source) : in_(in), source_(source) {}
+
+  JointTrajectory parse()
+  {
+    std::vector<std::string> header;
+    if (!nextRow(header))
+      fail(1, "empty file: expected a header row 't,<joints>,<joints>_vel' and at least two samples");
+    const std::size_t header_line = line_number_;
+    JointTrajectory trajectory;
+    trajectory.joint_names = jointNames(header, header_line);
+    const std::size_t n = trajectory.joint_names.size();
+
+    std::vector<std::string> row;
+    while (nextRow(row))
+    {
+      if (row.size() != header.size())
+        fail(line_number_, "wrong column count: " + std::to_string(row.size()) + " cells, the header has " +
+                               std::to_string(header.size()));
+      TrajectoryPoint point;
+      point.time = number(row[0], header[0]);
+      point.positions.resize(n);
+      point.velocities.resize(n);
+      for (std::size_t j = 0; j < n; ++j)
+      {
+        point.positions[j] = number(row[1 + j], header[1 + j]);
+        point.velocities[j] = number(row[1 + n + j], header[1 + n + j]);
+      }
+      if (!trajectory.points.empty() && !(point.time > trajectory.points.back().time))
+        fail(line_number_, "time " + row[0] + " is not after the previous time " +
+                               formatNumber(trajectory.points.back().time) + " (times must strictly increase)");
+      trajectory.points.push_back(std::move(point));
+    }
+    if (trajectory.points.size() < 2)
+      fail(line_number_, std::to_string(trajectory.points.size()) +
+                             " sample row(s): a trajectory needs at least two samples");
+    return trajectory;
+  }
+
+private:
+  bool nextRow(std::vector<std::string>& cells)
+  {
+    std::string line;
+    while (std::getline(in_, line))
+    {
+      ++line_number_;
+      if (!trim(line).empty())
+      {
+        cells = splitCells(line);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  std::vector<std::string> jointNames(const std::vector<std::string>& header, std::size_t line) const
+  {
+    if (header[0] != "t" && header[0] != "time")
+      fail(line, "header must start with 't' (time in seconds), found '" + header[0] + "' (is the header row missing?)");
+    if (header.size() < 3 || header.size() % 2 == 0)
+      fail(line, "wrong column count: header has " + std::to_string(header.size()) +
+                     " columns, expected 1 + 2n ('t', n joint positions, n '<joint>_vel' velocities)");
+    const std::size_t n = (header.size() - 1) / 2;
+    std::vector<std::string> names(header.begin() + 1, header.begin() + 1 + static_cast<std::ptrdiff_t>(n));
+    std::set<std::string> seen;
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      if (names[j].empty())
+        fail(line, "header column " + std::to_string(j + 2) + " has no joint name");
+      if (!seen.insert(names[j]).second)
+        fail(line, "joint '" + names[j] + "' appears twice in the header");
+      const std::string& velocity = header[1 + n + j];
+      if (velocity != names[j] + kVelocitySuffix && velocity != seedVelocityName(names[j]))
+        fail(line, "header column " + std::to_string(n + j + 2) + " is '" + velocity + "', expected '" + names[j] +
+                       kVelocitySuffix + "' (velocity of joint '" + names[j] + "')");
+    }
+    return names;
+  }
+
+  static std::string seedVelocityName(const std::string& position_name)
+  {
+    if (position_name.size() > 1 && position_name[0] == 'q' &&
+        position_name.find_first_not_of("0123456789", 1) == std::string::npos)
+      return "qd" + position_name.substr(1);
+    return "";
+  }
+
+  double number(const std::string& cell, const std::string& column) const
+  {
+    double value = 0.0;
+    const char* begin = cell.data();
+    const char* end = begin + cell.size();
+    if (begin != end && *begin == '+')
+      ++begin;
+    const auto result = std::from_chars(begin, end, value);
+    if (result.ec == std::errc::result_out_of_range && result.ptr == end)
+      fail(line_number_, "column '" + column + "': '" + cell + "' is out of range");
+    if (cell.empty() || result.ec != std::errc() || result.ptr != end)
+      fail(line_number_, "column '" + column + "': '" + cell + "' is not a number");
+    if (!std::isfinite(value))
+      fail(line_number_, "column '" + column + "': '" + cell + "' is not finite");
+    return value;
+  }
+
+  [[noreturn]] void fail(std::size_t line, const std::string& reason) const
+  {
+    throw TrajectoryError(source_ + ":" + std::to_string(line) + ": " + reason);
+  }
+
+  std::istream& in_;
+  std::string source_;
+  std::size_t line_number_ = 0;
+};
+
+void checkWritable(const JointTrajectory& trajectory, const std::string& source)
+{
+  const std::size_t n = trajectory.joint_names.size();
+  if (n == 0)
+    throw TrajectoryError(source + ": no joint names");
+  for (std::size_t k = 0; k < trajectory.points.size(); ++k)
+  {
+    const TrajectoryPoint& point = trajectory.points[k];
+    const std::string where = source + ": point " + std::to_string(k) + ": ";
+    if (point.positions.size() != n || point.velocities.size() != n)
+      throw TrajectoryError(where + std::to_string(point.positions.size()) + " positions and " +
+                            std::to_string(point.velocities.size()) + " velocities for " + std::to_string(n) +
+                            " joints");
+    bool finite = std::isfinite(point.time);
+    for (std::size_t j = 0; j < n; ++j)
+      finite = finite && std::isfinite(point.positions[j]) && std::isfinite(point.velocities[j]);
+    if (!finite)
+      throw TrajectoryError(where + "value is not finite");
+    if (k > 0 && !(point.time > trajectory.points[k - 1].time))
+      throw TrajectoryError(where + "time is not after the previous point's");
+  }
+}
+}  // namespace
+
+JointTrajectory readCsv(std::istream& in, const std::string& source)
+{
+  return CsvParser(in, source).parse();
+}
+
+JointTrajectory readCsv(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in)
+    throw TrajectoryError(path + ":0: cannot open for reading");
+  return readCsv(in, path);
+}
+
+void writeCsv(std::ostream& out, const JointTrajectory& trajectory, const std::string& source)
+{
+  checkWritable(trajectory, source);
+  std::string text = "t";
+  for (const auto& name : trajectory.joint_names)
+    text += "," + name;
+  for (const auto& name : trajectory.joint_names)
+    text += "," + name + kVelocitySuffix;
+  text += '\n';
+  for (const TrajectoryPoint& point : trajectory.points)
+  {
+    text += formatNumber(point.time);
+    for (double q : point.positions)
+      (text += ',') += formatNumber(q);
+    for (double qd : point.velocities)
+      (text += ',') += formatNumber(qd);
+    text += '\n';
+  }
+  out << text;
+  if (!out)
+    throw TrajectoryError(source + ": write failed");
+}
+
+void writeCsv(const std::string& path, const JointTrajectory& trajectory)
+{
+  checkWritable(trajectory, path);
+  std::ofstream out(path);
+  if (!out)
+    throw TrajectoryError(path + ": cannot open for writing");
+  writeCsv(out, trajectory, path);
+  out.close();
+  if (!out)
+    throw TrajectoryError(path + ": write failed");
+}
+}  // namespace vrrw_trajectory
