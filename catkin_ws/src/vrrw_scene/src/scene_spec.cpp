@@ -1,0 +1,197 @@
+#include "scene_spec.h"
+
+#include <filesystem>
+#include <random>
+#include <regex>
+#include <set>
+
+#include "yaml_field.h"
+
+namespace fs = std::filesystem;
+
+namespace vrrw_scene
+{
+namespace
+{
+std::string fieldName(const YamlField& field)
+{
+  return field.file() + ":" + std::to_string(field.node().Mark().line + 1) + ": " + field.path();
+}
+
+void checkName(const YamlField& field, std::set<std::string>& taken)
+{
+  const std::string name = field.asString();
+  if (!std::regex_match(name, std::regex("[A-Za-z][A-Za-z0-9_]*")))
+    field.fail("'" + name + "' is not a valid name (a letter, then letters, digits or _)");
+  if (name == "world")
+    field.fail("'world' is the root frame of every scene");
+  if (!taken.insert(name).second)
+    field.fail("the name '" + name + "' is used twice; robot and object names must be unique");
+  for (const auto& other : taken)
+    if (other != name && (other.rfind(name + "_", 0) == 0 || name.rfind(other + "_", 0) == 0))
+      field.fail("'" + name + "' and '" + other + "' would share the link prefix '" +
+                 std::min(name, other, [](auto& a, auto& b) { return a.size() < b.size(); }) + "_'");
+}
+
+std::string resolveFile(const YamlField& field, const std::string& scene_file)
+{
+  fs::path path = field.asString();
+  if (path.is_relative())
+    path = fs::path(scene_file).parent_path() / path;
+  if (!fs::is_regular_file(path))
+    field.fail("file '" + path.string() + "' does not exist");
+  return fs::canonical(path).string();
+}
+
+RobotSpec parseRobot(const YamlField& entry, const Catalog& catalog, const std::string& scene_file)
+{
+  entry.allowKeys({ "name", "model", "gripper", "description", "tip_link", "base", "initial" });
+  RobotSpec robot;
+  robot.field = fieldName(entry);
+  robot.name = entry["name"].asString();
+  if (entry.has("description"))
+  {
+    if (entry.has("model") || entry.has("gripper"))
+      entry["description"].fail("a robot takes either a catalogue model (with a gripper) or its own description");
+    robot.model = "custom";
+    robot.description = resolveFile(entry["description"], scene_file);
+    robot.tip_link = entry["tip_link"].asString();
+  }
+  else
+  {
+    robot.model = entry["model"].asString();
+    const auto model = catalog.robots.find(robot.model);
+    if (model == catalog.robots.end())
+      entry["model"].fail("unknown robot model '" + robot.model + "' (known: " + keyList(catalog.robots) + ")");
+    robot.gripper = entry.stringOr("gripper", "");
+    if (!robot.gripper.empty() && !model->second.builtin_gripper.empty())
+      entry["gripper"].fail("model '" + robot.model + "' has its own gripper '" + model->second.builtin_gripper + "'");
+    if (!robot.gripper.empty() && !catalog.grippers.count(robot.gripper))
+      entry["gripper"].fail("unknown gripper '" + robot.gripper + "' (known: " + keyList(catalog.grippers) + ")");
+    if (robot.gripper.empty())
+      robot.gripper = model->second.builtin_gripper;
+  }
+  if (entry.has("base"))
+    robot.base = entry["base"].asPose();
+  if (entry.has("initial"))
+    for (const auto& joint : entry["initial"].keys())
+      robot.initial[joint] = entry["initial"][joint].asDouble();
+  return robot;
+}
+
+void drawRandomPlacement(const YamlField& random, std::mt19937& rng, Eigen::Isometry3d& pose)
+{
+  random.allowKeys({ "x", "y", "z", "yaw" });
+  auto draw = [&](const char* axis) {
+    if (!random.has(axis))
+      return 0.0;
+    const auto range = random[axis].asDoubles(2);
+    if (range[1] < range[0])
+      random[axis].fail("the range [min, max] has min > max");
+    return std::uniform_real_distribution<double>(range[0], range[1])(rng);
+  };
+  const double dx = draw("x"), dy = draw("y"), dz = draw("z"), yaw = draw("yaw");
+  pose.translation() += Eigen::Vector3d(dx, dy, dz);
+  pose.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * pose.linear();
+}
+
+double positive(const YamlField& field, bool allow_zero)
+{
+  const double value = field.asDouble();
+  if (value < 0.0 || (!allow_zero && value == 0.0))
+    field.fail("must be " + std::string(allow_zero ? "zero or more" : "greater than zero") + ", got " +
+               field.asString());
+  return value;
+}
+
+ObjectSpec parseObject(const YamlField& entry, const Catalog& catalog, const std::string& scene_file,
+                       std::mt19937& rng)
+{
+  entry.allowKeys({ "name", "kind", "pose", "random", "mass", "friction", "restitution", "fixed", "size", "radius",
+                    "length", "mesh", "scale", "color" });
+  ObjectSpec object;
+  object.field = fieldName(entry);
+  object.name = entry["name"].asString();
+  object.kind = entry["kind"].asString();
+  const std::set<std::string> primitives{ "box", "cylinder", "sphere", "mesh" };
+  if (!catalog.objects.count(object.kind) && !primitives.count(object.kind))
+    entry["kind"].fail("unknown object kind '" + object.kind + "' (known: " + keyList(catalog.objects) +
+                       ", box, cylinder, sphere, mesh)");
+  if (entry.has("pose"))
+    object.pose = entry["pose"].asPose();
+  if (entry.has("random"))
+    drawRandomPlacement(entry["random"], rng, object.pose);
+  if (entry.has("mass"))
+    object.mass = positive(entry["mass"], true);
+  if (entry.has("friction"))
+    object.friction = positive(entry["friction"], true);
+  if (entry.has("restitution"))
+    object.restitution = positive(entry["restitution"], true);
+  if (entry.has("fixed"))
+    object.fixed = entry["fixed"].asBool();
+  if (entry.has("size"))
+  {
+    const auto size = entry["size"].asDoubles(3);
+    object.size = Eigen::Vector3d(size[0], size[1], size[2]);
+    if (object.size.minCoeff() <= 0.0)
+      entry["size"].fail("every extent must be greater than zero");
+  }
+  if (entry.has("radius"))
+    object.radius = positive(entry["radius"], false);
+  if (entry.has("length"))
+    object.length = positive(entry["length"], false);
+  if (object.kind == "mesh")
+    object.mesh = resolveFile(entry["mesh"], scene_file);
+  if (entry.has("scale"))
+  {
+    const auto scale = entry["scale"].asDoubles(3);
+    object.scale = Eigen::Vector3d(scale[0], scale[1], scale[2]);
+  }
+  if (entry.has("color"))
+  {
+    const auto rgba = entry["color"].asDoubles(4);
+    object.color = std::array<float, 4>{ float(rgba[0]), float(rgba[1]), float(rgba[2]), float(rgba[3]) };
+  }
+  if (primitives.count(object.kind) && !object.mass && !(object.fixed && *object.fixed))
+    entry.fail("a " + object.kind + " that is not fixed needs a mass");
+  return object;
+}
+}  // namespace
+
+SceneSpec parseSceneFile(const std::string& file, const Catalog& catalog)
+{
+  const auto root = YamlField::loadFile(file);
+  if (!root.node().IsMap())
+    root.fail("a scene is a mapping with 'robots' and 'objects'");
+  root.allowKeys({ "name", "seed", "robots", "objects" });
+  SceneSpec scene;
+  scene.file = file;
+  scene.name = root.stringOr("name", fs::path(file).stem().string());
+  scene.seed = root.has("seed") ? unsigned(positive(root["seed"], true)) : 0u;
+  std::set<std::string> names;
+  if (root.has("robots"))
+  {
+    const auto robots = root["robots"];
+    robots.requireSequence();
+    for (std::size_t i = 0; i < robots.size(); ++i)
+    {
+      checkName(robots[i]["name"], names);
+      scene.robots.push_back(parseRobot(robots[i], catalog, file));
+    }
+  }
+  if (root.has("objects"))
+  {
+    std::mt19937 rng(scene.seed);
+    const auto objects = root["objects"];
+    objects.requireSequence();
+    for (std::size_t i = 0; i < objects.size(); ++i)
+    {
+      checkName(objects[i]["name"], names);
+      scene.objects.push_back(parseObject(objects[i], catalog, file, rng));
+    }
+  }
+  if (scene.robots.empty() && scene.objects.empty())
+    root.fail("the scene has no robots and no objects");
+  return scene;
+}
+}  // namespace vrrw_scene

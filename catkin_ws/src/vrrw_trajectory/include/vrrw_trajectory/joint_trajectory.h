@@ -1,0 +1,24 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace vrrw_trajectory
+{
+/// \brief One sample of a joint trajectory; times are seconds from the start.
+struct TrajectoryPoint
+{
+  double time = 0.0;
+  std::vector<double> positions;
+  std::vector<double> velocities;     ///< empty when unknown
+  std::vector<double> accelerations;  ///< empty when unknown
+};
+
+/// \brief A joint-space trajectory, the ROS-free twin of trajectory_msgs/JointTrajectory.
+struct JointTrajectory
+{
+  std::vector<std::string> joint_names;
+  std::vector<TrajectoryPoint> points;
+
+  double duration() const { return points.empty() ? 0.0 : points.back().time - points.front().time; }
+};
+}  // namespace vrrw_trajectory

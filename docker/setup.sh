@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The one setup step of vrrw, used by ./vrrw setup, docker/Dockerfile and CI:
+# installs the Debian packages in docker/packages.txt and a venv holding xacro.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
+packages=$(grep -v '^#' "$root/docker/packages.txt" | tr -s ' \n' ' ')
+
+missing=()
+for p in $packages; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}" >&2
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >&2
+fi
+
+venv="$root/.venv"
+if [ ! -x "$venv/bin/xacro" ]; then
+  echo "setup: creating $venv with xacro==1.13.3" >&2
+  /usr/bin/python3 -m venv --system-site-packages "$venv"
+  "$venv/bin/pip" install -q --disable-pip-version-check xacro==1.13.3
+fi
+echo "setup: ready" >&2
