@@ -1,0 +1,54 @@
+#pragma once
+#include <memory>
+#include <string>
+#include <vrrw_control/robot_hardware.h>
+#include <vrrw_control/trajectory_interpolator.h>
+
+namespace vrrw_control
+{
+/// \brief Options of a gripper; positions are those of its actuated joint.
+struct GripperOptions
+{
+  double min_position = 0.0, max_position = 0.8;
+  double max_velocity = 1.0;       ///< rad/s (m/s) of the actuated joint
+  double min_duration = 0.5;       ///< s for any move
+  double goal_tolerance = 0.01;
+  double stall_velocity = 1e-3;    ///< below this the fingers count as not moving
+  double stall_time = 0.2;         ///< s without motion short of the goal: stalled
+  double timeout = 5.0;            ///< s after the planned move end
+};
+
+/// \brief Moves the actuated gripper joint along a smooth cubic to the commanded position and
+/// reports reached_goal, or stalled when the fingers stop short (closed on an object).
+class GripperController
+{
+public:
+  struct Cycle
+  {
+    bool goal_active = false;
+    bool done = false;  ///< set once, in the cycle the goal ends
+    bool reached_goal = false, stalled = false, timed_out = false;
+    double position = 0.0, effort = 0.0;
+  };
+
+  GripperController(RobotHardware& hardware, const std::string& joint, GripperOptions options);
+
+  /// \brief Empty when acceptable, else one line naming the reason.
+  std::string check(double position) const;
+  void start(double position, double now);
+  void stop(double now);
+  Cycle update(double time);
+
+  const std::string& joint() const { return joint_; }
+
+private:
+  RobotHardware& hw_;
+  std::string joint_;
+  int index_;
+  GripperOptions options_;
+  std::unique_ptr<TrajectoryInterpolator> motion_;
+  double start_time_ = 0.0, target_ = 0.0, hold_ = 0.0;
+  double last_position_ = 0.0, last_time_ = 0.0, still_since_ = -1.0;
+  bool active_ = false;
+};
+}  // namespace vrrw_control

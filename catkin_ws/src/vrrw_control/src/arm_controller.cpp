@@ -1,0 +1,165 @@
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vrrw_control/arm_controller.h>
+#include <vrrw_control/stop_trajectory.h>
+
+namespace vrrw_control
+{
+ArmController::ArmController(RobotHardware& hardware, const std::vector<std::string>& joints,
+                             TrajectoryValidator validator, std::vector<double> stop_deceleration)
+  : hw_(hardware), joints_(joints), validator_(std::move(validator)), stop_deceleration_(std::move(stop_deceleration))
+{
+  for (const auto& j : joints_)
+  {
+    index_.push_back(hw_.index(j));
+    if (index_.back() < 0)
+      throw std::invalid_argument("arm joint " + j + ": not a joint of the robot hardware");
+  }
+  hold_ = JointSample(joints_.size());
+  for (size_t j = 0; j < joints_.size(); ++j)
+    hold_.positions[j] = hw_.command().positions[index_[j]];
+}
+
+JointSample ArmController::desiredAt(double time) const
+{
+  if (motion_ && (time >= motion_start_ || !stopping_))
+    return motion_->sample(time - motion_start_);
+  if (stopping_)
+    return stopping_->sample(time);
+  return hold_;
+}
+
+JointSample ArmController::actual() const
+{
+  JointSample a(joints_.size());
+  for (size_t j = 0; j < joints_.size(); ++j)
+  {
+    a.positions[j] = hw_.state().positions[index_[j]];
+    a.velocities[j] = hw_.state().velocities[index_[j]];
+    a.accelerations[j] = hw_.state().accelerations[index_[j]];
+  }
+  return a;
+}
+
+bool ArmController::moving() const { return motion_ || stopping_; }
+
+JointSample ArmController::restState(double now) const
+{
+  const JointSample d = desiredAt(now);
+  const auto stop = makeStopTrajectory(joints_, d, stop_deceleration_);
+  JointSample rest(joints_.size());
+  rest.positions = stop.points.back().positions;
+  return rest;
+}
+
+Validation ArmController::validate(const vrrw_trajectory::JointTrajectory& goal, double now) const
+{
+  return validator_.validate(goal, restState(now));
+}
+
+void ArmController::stop(double now)
+{
+  const JointSample d = desiredAt(now);
+  auto stop = makeStopTrajectory(joints_, d, stop_deceleration_);
+  for (auto& p : stop.points)
+    p.time += now;
+  stopping_ = std::make_unique<TrajectoryInterpolator>(stop);
+  motion_.reset();
+}
+
+void ArmController::start(const Validation& accepted, double start_time, double now, const Tolerances& tolerances)
+{
+  stop(now);
+  motion_ = std::make_unique<TrajectoryInterpolator>(accepted.executable);
+  motion_start_ = std::max(start_time, stopping_->endTime());
+  tolerances_ = tolerances;
+}
+
+void ArmController::endGoal(Outcome outcome, const std::string& message, double time, Cycle& cycle)
+{
+  cycle.outcome = outcome;
+  cycle.message = message;
+  cycle.goal_active = false;
+  if (outcome == Outcome::Succeeded)
+  {
+    hold_ = motion_->sample(motion_->endTime());
+    motion_.reset();
+    stopping_.reset();
+  }
+  else
+    stop(time);
+}
+
+void ArmController::checkTolerances(double t, Cycle& cycle)
+{
+  const auto& tol = tolerances_;
+  const auto name = [&](size_t j) { return joints_[j]; };
+  std::ostringstream why;
+  if (t <= motion_->endTime())
+  {
+    for (size_t j = 0; j < joints_.size(); ++j)
+    {
+      const double ep = std::abs(cycle.error.positions[j]), ev = std::abs(cycle.error.velocities[j]);
+      if (tol.path_position[j] > 0.0 && ep > tol.path_position[j])
+        why << "joint " << name(j) << ": position error " << ep << " exceeds path tolerance " << tol.path_position[j];
+      else if (tol.path_velocity[j] > 0.0 && ev > tol.path_velocity[j])
+        why << "joint " << name(j) << ": velocity error " << ev << " exceeds path tolerance " << tol.path_velocity[j];
+      if (!why.str().empty())
+        return endGoal(Outcome::PathToleranceViolated, why.str(), t + motion_start_, cycle);
+    }
+    return;
+  }
+  for (size_t j = 0; j < joints_.size(); ++j)
+  {
+    const double ep = std::abs(cycle.error.positions[j]), v = std::abs(cycle.actual.velocities[j]);
+    if (tol.goal_position[j] > 0.0 && ep > tol.goal_position[j])
+      why << "joint " << name(j) << ": position error " << ep << " exceeds goal tolerance " << tol.goal_position[j];
+    else if (tol.goal_velocity[j] > 0.0 && v > tol.goal_velocity[j])
+      why << "joint " << name(j) << ": velocity " << v << " exceeds goal tolerance " << tol.goal_velocity[j];
+    if (!why.str().empty())
+      break;
+  }
+  if (why.str().empty())
+    return endGoal(Outcome::Succeeded, "", t + motion_start_, cycle);
+  if (t > motion_->endTime() + tol.goal_time)
+    endGoal(Outcome::GoalToleranceViolated, why.str() + " after goal time tolerance " + std::to_string(tol.goal_time) + " s",
+            t + motion_start_, cycle);
+}
+
+ArmController::Cycle ArmController::update(double time)
+{
+  Cycle cycle;
+  if (stopping_ && !motion_ && time >= stopping_->endTime())
+  {
+    hold_ = stopping_->sample(stopping_->endTime());
+    stopping_.reset();
+  }
+  cycle.desired = desiredAt(time);
+  cycle.actual = actual();
+  cycle.error = JointSample(joints_.size());
+  for (size_t j = 0; j < joints_.size(); ++j)
+  {
+    cycle.error.positions[j] = cycle.desired.positions[j] - cycle.actual.positions[j];
+    cycle.error.velocities[j] = cycle.desired.velocities[j] - cycle.actual.velocities[j];
+    cycle.error.accelerations[j] = cycle.desired.accelerations[j] - cycle.actual.accelerations[j];
+  }
+  if (motion_)
+  {
+    cycle.goal_active = true;
+    if (time >= motion_start_)
+    {
+      stopping_.reset();
+      checkTolerances(time - motion_start_, cycle);
+    }
+  }
+  auto& cmd = hw_.command();
+  for (size_t j = 0; j < joints_.size(); ++j)
+  {
+    cmd.positions[index_[j]] = cycle.desired.positions[j];
+    cmd.velocities[index_[j]] = cycle.desired.velocities[j];
+    cmd.accelerations[index_[j]] = cycle.desired.accelerations[j];
+  }
+  return cycle;
+}
+}  // namespace vrrw_control

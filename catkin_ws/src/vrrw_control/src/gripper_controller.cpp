@@ -1,0 +1,90 @@
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vrrw_control/gripper_controller.h>
+
+namespace vrrw_control
+{
+GripperController::GripperController(RobotHardware& hardware, const std::string& joint, GripperOptions options)
+  : hw_(hardware), joint_(joint), index_(hardware.index(joint)), options_(options)
+{
+  if (index_ < 0)
+    throw std::invalid_argument("gripper joint " + joint + ": not a joint of the robot hardware");
+  hold_ = hw_.command().positions[index_];
+}
+
+std::string GripperController::check(double position) const
+{
+  std::ostringstream why;
+  if (!std::isfinite(position))
+    why << "joint " << joint_ << ": position is not finite";
+  else if (position < options_.min_position || position > options_.max_position)
+    why << "joint " << joint_ << ": position " << position << " outside limits [" << options_.min_position << ", "
+        << options_.max_position << "]";
+  return why.str();
+}
+
+void GripperController::start(double position, double now)
+{
+  const double from = motion_ ? motion_->sample(now - start_time_).positions[0] : hold_;
+  vrrw_trajectory::JointTrajectory move;
+  move.joint_names = { joint_ };
+  vrrw_trajectory::TrajectoryPoint a, b;
+  a.positions = { from };
+  a.velocities = { 0.0 };
+  b.positions = { position };
+  b.velocities = { 0.0 };
+  b.time = std::max(options_.min_duration, 1.5 * std::abs(position - from) / options_.max_velocity);
+  move.points = { a, b };
+  motion_ = std::make_unique<TrajectoryInterpolator>(move);
+  start_time_ = now;
+  target_ = position;
+  last_position_ = hw_.state().positions[index_];
+  last_time_ = now;
+  still_since_ = -1.0;
+  active_ = true;
+}
+
+void GripperController::stop(double now)
+{
+  if (motion_)
+    hold_ = motion_->sample(now - start_time_).positions[0];
+  motion_.reset();
+  active_ = false;
+}
+
+GripperController::Cycle GripperController::update(double time)
+{
+  Cycle c;
+  const double commanded = motion_ ? motion_->sample(time - start_time_).positions[0] : hold_;
+  hw_.command().positions[index_] = commanded;
+  hw_.command().velocities[index_] = motion_ ? motion_->sample(time - start_time_).velocities[0] : 0.0;
+  c.position = hw_.state().positions[index_];
+  c.effort = hw_.efforts()[index_];
+  if (!active_)
+    return c;
+  c.goal_active = true;
+  const double end = start_time_ + motion_->endTime();
+  c.reached_goal = time >= end && std::abs(c.position - target_) <= options_.goal_tolerance;
+  const bool still = std::abs(c.position - last_position_) <= options_.stall_velocity * (time - last_time_) + 1e-12;
+  last_position_ = c.position;
+  last_time_ = time;
+  if (!still || time < start_time_ + 0.1)
+    still_since_ = -1.0;
+  else if (still_since_ < 0.0)
+    still_since_ = time;
+  c.stalled = !c.reached_goal && still_since_ >= 0.0 && time - still_since_ >= options_.stall_time &&
+              std::abs(c.position - target_) > options_.goal_tolerance;
+  c.timed_out = !c.reached_goal && !c.stalled && time > end + options_.timeout;
+  if (c.reached_goal || c.stalled || c.timed_out)
+  {
+    c.done = true;
+    c.goal_active = false;
+    active_ = false;
+    hold_ = target_;
+    motion_.reset();
+  }
+  return c;
+}
+}  // namespace vrrw_control

@@ -1,0 +1,232 @@
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <vrrw_control/trajectory_interpolator.h>
+#include <vrrw_control/trajectory_validator.h>
+
+namespace vrrw_control
+{
+namespace
+{
+bool reject(Validation& v, Validation::Error error, int point, const std::string& joint, const std::string& reason)
+{
+  v.error = error;
+  v.point = point;
+  v.joint = joint;
+  std::ostringstream s;
+  if (point >= 0)
+    s << "point " << point << ": ";
+  if (!joint.empty())
+    s << "joint " << joint << ": ";
+  s << reason;
+  v.message = s.str();
+  return false;
+}
+
+std::string fmt(double x)
+{
+  std::ostringstream s;
+  s.precision(6);
+  s << x;
+  return s.str();
+}
+
+bool allFinite(const std::vector<double>& values, size_t& bad)
+{
+  for (bad = 0; bad < values.size(); ++bad)
+    if (!std::isfinite(values[bad]))
+      return false;
+  return true;
+}
+}  // namespace
+
+TrajectoryValidator::TrajectoryValidator(std::vector<JointLimits> limits, ValidationOptions options)
+  : limits_(std::move(limits)), options_(options)
+{
+}
+
+bool TrajectoryValidator::checkJoints(const vrrw_trajectory::JointTrajectory& goal, Validation& v,
+                                      std::vector<size_t>& order) const
+{
+  std::map<std::string, size_t> robot;
+  for (size_t j = 0; j < limits_.size(); ++j)
+    robot[limits_[j].name] = j;
+  std::map<std::string, size_t> seen;
+  for (size_t k = 0; k < goal.joint_names.size(); ++k)
+  {
+    const auto& name = goal.joint_names[k];
+    if (!seen.emplace(name, k).second)
+      return reject(v, Validation::Error::InvalidJoints, -1, name, "named twice in joint_names");
+    if (!robot.count(name))
+      return reject(v, Validation::Error::InvalidJoints, -1, name, "not a joint of this controller");
+  }
+  order.assign(limits_.size(), 0);
+  for (size_t j = 0; j < limits_.size(); ++j)
+  {
+    const auto it = seen.find(limits_[j].name);
+    if (it == seen.end())
+      return reject(v, Validation::Error::InvalidJoints, -1, limits_[j].name, "missing from joint_names");
+    order[j] = it->second;
+  }
+  return true;
+}
+
+bool TrajectoryValidator::checkPoints(const vrrw_trajectory::JointTrajectory& goal, const std::vector<size_t>& order,
+                                      Validation& v) const
+{
+  const auto Bad = Validation::Error::InvalidGoal;
+  const size_t n = limits_.size();
+  if (goal.points.empty())
+    return reject(v, Bad, -1, "", "trajectory has no points");
+  for (size_t i = 0; i < goal.points.size(); ++i)
+  {
+    const auto& p = goal.points[i];
+    const int pi = static_cast<int>(i);
+    if (p.positions.size() != n)
+      return reject(v, Bad, pi, "", "positions has " + std::to_string(p.positions.size()) + " values, expected " +
+                                        std::to_string(n));
+    if (!p.velocities.empty() && p.velocities.size() != n)
+      return reject(v, Bad, pi, "", "velocities has " + std::to_string(p.velocities.size()) + " values, expected 0 or " +
+                                        std::to_string(n));
+    if (!p.accelerations.empty() && p.accelerations.size() != n)
+      return reject(v, Bad, pi, "",
+                    "accelerations has " + std::to_string(p.accelerations.size()) + " values, expected 0 or " +
+                        std::to_string(n));
+    if (!std::isfinite(p.time))
+      return reject(v, Bad, pi, "", "time_from_start is not finite");
+    if (i == 0 && p.time < 0.0)
+      return reject(v, Bad, pi, "", "time_from_start " + fmt(p.time) + " s is negative");
+    if (i > 0 && !(p.time > goal.points[i - 1].time))
+      return reject(v, Bad, pi, "",
+                    "time_from_start " + fmt(p.time) + " s does not increase (previous point " +
+                        fmt(goal.points[i - 1].time) + " s)");
+    size_t bad = 0;
+    for (const auto* values : { &p.positions, &p.velocities, &p.accelerations })
+      if (!allFinite(*values, bad))
+        return reject(v, Bad, pi, goal.joint_names[bad], "value is not finite");
+    for (size_t j = 0; j < n; ++j)
+    {
+      const auto& l = limits_[j];
+      const size_t k = order[j];
+      const double q = p.positions[k];
+      if (l.has_position_limits && (q < l.min_position || q > l.max_position))
+        return reject(v, Bad, pi, l.name,
+                      "position " + fmt(q) + " outside limits [" + fmt(l.min_position) + ", " + fmt(l.max_position) + "]");
+      if (!p.velocities.empty() && std::abs(p.velocities[k]) > l.max_velocity)
+        return reject(v, Bad, pi, l.name,
+                      "velocity " + fmt(p.velocities[k]) + " exceeds limit " + fmt(l.max_velocity));
+      if (!p.accelerations.empty() && std::abs(p.accelerations[k]) > l.max_acceleration)
+        return reject(v, Bad, pi, l.name,
+                      "acceleration " + fmt(p.accelerations[k]) + " exceeds limit " + fmt(l.max_acceleration));
+    }
+  }
+  return true;
+}
+
+bool TrajectoryValidator::checkInterpolant(int first_goal_point, Validation& v) const
+{
+  const auto& traj = v.executable;
+  const TrajectoryInterpolator interp(traj);
+  const double slack = 1.0 + options_.interpolant_slack;
+  for (size_t i = 1; i < traj.points.size(); ++i)
+  {
+    const double t0 = traj.points[i - 1].time, t1 = traj.points[i].time;
+    const int goal_point = static_cast<int>(i) - first_goal_point;
+    for (int s = 1; s < options_.samples_per_segment; ++s)
+    {
+      const JointSample x = interp.sample(t0 + (t1 - t0) * s / options_.samples_per_segment);
+      for (size_t j = 0; j < limits_.size(); ++j)
+      {
+        const auto& l = limits_[j];
+        const double q = x.positions[j];
+        if (l.has_position_limits && (q < l.min_position || q > l.max_position))
+          return reject(v, Validation::Error::InvalidGoal, goal_point, l.name,
+                        "interpolated position " + fmt(q) + " before this point leaves limits [" +
+                            fmt(l.min_position) + ", " + fmt(l.max_position) + "]");
+        const bool linear = traj.points[i].velocities.empty() || traj.points[i - 1].velocities.empty();
+        const double qd =
+            linear ? (traj.points[i].positions[j] - traj.points[i - 1].positions[j]) / (t1 - t0) : x.velocities[j];
+        if (std::abs(qd) > slack * l.max_velocity)
+          return reject(v, Validation::Error::InvalidGoal, goal_point, l.name,
+                        "interpolated velocity " + fmt(qd) + " before this point exceeds limit " +
+                            fmt(l.max_velocity));
+      }
+    }
+  }
+  return true;
+}
+
+double TrajectoryValidator::blendDuration(const JointSample& from, const vrrw_trajectory::TrajectoryPoint& to) const
+{
+  double duration = 0.1;
+  for (size_t j = 0; j < limits_.size(); ++j)
+  {
+    const double dq = std::abs(to.positions[j] - from.positions[j]);
+    duration = std::max(duration, 1.5 * dq / limits_[j].max_velocity);
+    if (std::isfinite(limits_[j].max_acceleration))
+      duration = std::max(duration, std::sqrt(6.0 * dq / limits_[j].max_acceleration));
+  }
+  return options_.blend_margin * duration;
+}
+
+Validation TrajectoryValidator::validate(const vrrw_trajectory::JointTrajectory& goal, const JointSample& current) const
+{
+  Validation v;
+  std::vector<size_t> order;
+  if (!checkJoints(goal, v, order) || !checkPoints(goal, order, v))
+    return v;
+
+  auto& out = v.executable;
+  for (const auto& l : limits_)
+    out.joint_names.push_back(l.name);
+  for (const auto& p : goal.points)
+  {
+    vrrw_trajectory::TrajectoryPoint q;
+    q.time = p.time;
+    for (size_t j = 0; j < limits_.size(); ++j)
+    {
+      q.positions.push_back(p.positions[order[j]]);
+      if (!p.velocities.empty())
+        q.velocities.push_back(p.velocities[order[j]]);
+      if (!p.accelerations.empty())
+        q.accelerations.push_back(p.accelerations[order[j]]);
+    }
+    out.points.push_back(q);
+  }
+
+  const auto& first = out.points.front();
+  size_t worst = 0;
+  double worst_error = -1.0;
+  for (size_t j = 0; j < limits_.size(); ++j)
+  {
+    const double e = std::abs(first.positions[j] - current.positions[j]);
+    if (e > worst_error)
+      worst_error = e, worst = j;
+  }
+  vrrw_trajectory::TrajectoryPoint rest;
+  rest.positions = current.positions;
+  rest.velocities.assign(limits_.size(), 0.0);
+  rest.accelerations.assign(limits_.size(), 0.0);
+  if (worst_error > options_.start_tolerance)
+  {
+    if (!options_.insert_blend)
+    {
+      reject(v, Validation::Error::InvalidGoal, 0, limits_[worst].name,
+             "starts " + fmt(worst_error) + " from the current position " + fmt(current.positions[worst]) +
+                 " (start tolerance " + fmt(options_.start_tolerance) + ")");
+      return v;
+    }
+    const double shift = blendDuration(current, first) - first.time;
+    if (shift > 0.0)
+      for (auto& p : out.points)
+        p.time += shift;
+    v.blended = true;
+  }
+  const bool prepend = out.points.front().time > 0.0;
+  if (prepend)
+    out.points.insert(out.points.begin(), rest);
+  checkInterpolant(prepend ? 1 : 0, v);
+  return v;
+}
+}  // namespace vrrw_control

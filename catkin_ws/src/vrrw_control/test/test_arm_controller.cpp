@@ -1,0 +1,171 @@
+#include <cmath>
+#include <gtest/gtest.h>
+#include <vrrw_control/arm_controller.h>
+#include <vrrw_control/fake_robot.h>
+
+using namespace vrrw_control;
+
+namespace
+{
+std::vector<JointLimits> limits(const std::vector<std::string>& names)
+{
+  std::vector<JointLimits> l(names.size());
+  for (size_t j = 0; j < names.size(); ++j)
+  {
+    l[j].name = names[j];
+    l[j].max_velocity = 2.0;
+    l[j].max_acceleration = 4.0;
+  }
+  return l;
+}
+
+vrrw_trajectory::JointTrajectory ramp(const std::vector<std::string>& names, double to, double duration)
+{
+  vrrw_trajectory::JointTrajectory g;
+  g.joint_names = names;
+  vrrw_trajectory::TrajectoryPoint a, b;
+  a.positions.assign(names.size(), 0.0);
+  a.velocities.assign(names.size(), 0.0);
+  b = a;
+  b.positions.assign(names.size(), to);
+  b.time = duration;
+  g.points = { a, b };
+  return g;
+}
+
+/// Follows the command one cycle late and lags by a fixed offset on the first joint.
+class LaggingRobot : public RobotHardware
+{
+public:
+  LaggingRobot(std::vector<std::string> j, double offset) : RobotHardware(std::move(j)), offset_(offset) {}
+  void read(double, double) override {}
+  void write(double, double) override
+  {
+    state_ = command_;
+    state_.positions[0] -= offset_;
+  }
+
+private:
+  double offset_;
+};
+}  // namespace
+
+TEST(ArmController, FakeRobotFollowsTheInterpolantExactly)
+{
+  const std::vector<std::string> names = { "r_a", "r_b" };
+  FakeRobot robot(names);
+  ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), { 4.0, 4.0 });
+  const auto v = arm.validate(ramp(names, 1.0, 2.0), 0.0);
+  ASSERT_TRUE(v.ok()) << v.message;
+  arm.start(v, 0.5, 0.0, Tolerances::uniform(2, 0.0, 0.01, 0.0, 0.5));
+  const TrajectoryInterpolator reference(v.executable);
+  ArmController::Outcome outcome = ArmController::Outcome::None;
+  double max_error = 0.0;
+  for (int k = 0; k <= 400 && outcome == ArmController::Outcome::None; ++k)
+  {
+    const double t = 0.01 * k;
+    robot.read(t, 0.01);
+    const auto c = arm.update(t);
+    robot.write(t, 0.01);
+    outcome = c.outcome;
+    max_error = std::max(max_error, std::abs(robot.state().positions[1] - reference.sample(t - 0.5).positions[1]));
+  }
+  EXPECT_EQ(outcome, ArmController::Outcome::Succeeded);
+  EXPECT_LT(max_error, 1e-12);
+  EXPECT_DOUBLE_EQ(robot.state().positions[0], 1.0);
+  EXPECT_FALSE(arm.moving());
+}
+
+TEST(ArmController, PathAndGoalTolerancesAbort)
+{
+  const std::vector<std::string> names = { "r_a" };
+  for (int mode = 0; mode < 2; ++mode)
+  {
+    LaggingRobot robot(names, 0.05);
+    ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), { 4.0 });
+    const auto v = arm.validate(ramp(names, 0.5, 1.0), 0.0);
+    ASSERT_TRUE(v.ok());
+    const auto tol = mode == 0 ? Tolerances::uniform(1, 0.02, 0.0, 0.0, 0.0) : Tolerances::uniform(1, 0.0, 0.01, 0.0, 0.3);
+    arm.start(v, 0.0, 0.0, tol);
+    ArmController::Cycle c;
+    double end = 0.0;
+    for (int k = 0; k < 300 && c.outcome == ArmController::Outcome::None; ++k)
+    {
+      robot.read(0.01 * k, 0.01);
+      c = arm.update(0.01 * k);
+      robot.write(0.01 * k, 0.01);
+      end = 0.01 * k;
+    }
+    if (mode == 0)
+    {
+      EXPECT_EQ(c.outcome, ArmController::Outcome::PathToleranceViolated);
+      EXPECT_NE(c.message.find("r_a"), std::string::npos);
+      EXPECT_LT(end, 0.05);
+    }
+    else
+    {
+      EXPECT_EQ(c.outcome, ArmController::Outcome::GoalToleranceViolated);
+      EXPECT_NEAR(end, 1.3, 0.011);
+    }
+  }
+}
+
+TEST(ArmController, StopDeceleratesSmoothly)
+{
+  const std::vector<std::string> names = { "r_a" };
+  FakeRobot robot(names);
+  ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), { 4.0 });
+  const auto v = arm.validate(ramp(names, 2.0, 2.0), 0.0);
+  ASSERT_TRUE(v.ok()) << v.message;
+  arm.start(v, 0.0, 0.0, Tolerances::uniform(1, 0.0, 0.0, 0.0, 0.0));
+  double previous_q = 0.0, previous_v = 0.0, max_step = 0.0, max_dv = 0.0;
+  const double dt = 0.001;
+  for (int k = 0; k < 2000; ++k)
+  {
+    const double t = dt * k;
+    if (k == 1000)
+      arm.stop(t);
+    const auto c = arm.update(t);
+    robot.write(t, dt);
+    max_step = std::max(max_step, std::abs(c.desired.positions[0] - previous_q));
+    if (k > 0)
+      max_dv = std::max(max_dv, std::abs(c.desired.velocities[0] - previous_v) / dt);
+    previous_q = c.desired.positions[0];
+    previous_v = c.desired.velocities[0];
+  }
+  EXPECT_LE(max_step, 1.5 * dt + 1e-9);  // peak velocity of the cubic is 1.5 rad/s
+  EXPECT_LE(max_dv, 4.0 + 1e-6);
+  EXPECT_FALSE(arm.moving());
+  EXPECT_EQ(previous_v, 0.0);
+  EXPECT_LT(previous_q, 2.0);
+}
+
+TEST(ArmController, PreemptionStopsThenStartsFromRest)
+{
+  const std::vector<std::string> names = { "r_a" };
+  FakeRobot robot(names);
+  ValidationOptions o;
+  o.insert_blend = true;
+  ArmController arm(robot, names, TrajectoryValidator(limits(names), o), { 4.0 });
+  arm.start(arm.validate(ramp(names, 2.0, 2.0), 0.0), 0.0, 0.0, Tolerances::uniform(1, 0, 0, 0, 0));
+  double t = 0.0;
+  for (; t < 1.0; t += 0.001)
+    arm.update(t), robot.write(t, 0.001);
+  const auto second = arm.validate(ramp(names, 0.0, 1.0), t);  // back to zero, blended from the rest state
+  ASSERT_TRUE(second.ok()) << second.message;
+  EXPECT_GT(second.executable.points.front().positions[0], robot.state().positions[0]);
+  arm.start(second, t, t, Tolerances::uniform(1, 0, 0, 0, 0));
+  double previous_v = robot.state().velocities[0], max_dv = 0.0;
+  ArmController::Outcome outcome = ArmController::Outcome::None;
+  for (; t < 6.0 && outcome == ArmController::Outcome::None; t += 0.001)
+  {
+    const auto c = arm.update(t);
+    robot.write(t, 0.001);
+    max_dv = std::max(max_dv, std::abs(c.desired.velocities[0] - previous_v) / 0.001);
+    previous_v = c.desired.velocities[0];
+    outcome = c.outcome;
+  }
+  EXPECT_EQ(outcome, ArmController::Outcome::Succeeded);
+  EXPECT_NEAR(robot.state().positions[0], 0.0, 1e-12);
+  EXPECT_LE(max_dv, 4.0 + 1e-6);
+}
