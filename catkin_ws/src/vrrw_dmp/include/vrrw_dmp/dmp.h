@@ -1,0 +1,127 @@
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "vrrw_dmp/dmp_parameters.h"
+#include "vrrw_dmp/gaussian_basis.h"
+#include "vrrw_trajectory/joint_trajectory.h"
+
+namespace vrrw_dmp
+{
+/// \brief Where a model came from, kept with it in the model file.
+struct DmpProvenance
+{
+  std::string source;         ///< e.g. "demo.csv", "bag:/tmp/x.bag#/joint_states", "message"
+  std::string created;        ///< UTC, ISO 8601
+  std::size_t samples = 0;    ///< demonstration samples
+  std::string demo_checksum;  ///< FNV-1a 64 of the demonstration's times and positions, hex
+};
+
+/// \brief Integration state of a rollout; created by Dmp::begin, advanced by Dmp::step without allocating.
+struct DmpState
+{
+  double time = 0.0;  ///< seconds since the start
+  double phase = 1.0;  ///< canonical variable s
+  double tau = 1.0;
+  std::vector<double> positions;      ///< x (rad)
+  std::vector<double> velocities;     ///< dx/dt (rad/s)
+  std::vector<double> accelerations;  ///< d2x/dt2 (rad/s^2)
+  std::vector<double> start;
+  std::vector<double> goal;
+  std::vector<double> scale;  ///< what multiplies the forcing term, per joint
+  std::vector<double> scaled_velocity;  ///< v = tau dx/dt
+  std::vector<double> forcing;          ///< f(s) at the current phase, per joint
+  std::vector<double> forcing_mid;      ///< scratch: f at the half step
+  std::vector<double> forcing_end;      ///< scratch: f at the end of the step
+  std::vector<double> psi;              ///< scratch: basis values
+};
+
+/// \brief A new start, goal and speed for a rollout; empty vectors and tau <= 0 mean "as demonstrated".
+struct RolloutRequest
+{
+  std::vector<double> start;
+  std::vector<double> goal;
+  double tau = 0.0;  ///< seconds; the demonstration has tau = its duration
+  double dt = 0.01;  ///< output sample period, seconds
+  double goal_tolerance = 1e-4;  ///< rad; the rollout ends when every joint is this close to its goal ...
+  double rest_tolerance = 1e-3;  ///< ... and every |v| = |tau dx/dt| is below this (rad)
+};
+
+/// \brief A multi-DoF Dynamic Movement Primitive, equations 2-4 of the VRRW paper (after Ijspeert et
+/// al. 2002/2013): per joint  tau dv/dt = K (g - x) - D v + (g - x0) f(s),  tau dx/dt = v,
+/// tau ds/dt = -alpha s,  f(s) = sum_i w_i psi_i(s) / sum_i psi_i(s) * s.
+///
+/// Learning: positions are differentiated with LocalPolynomialDerivative, target forcing terms follow
+/// from the first equation with tau = demo duration, and each w_i is the locally weighted regression
+///   w_i = sum_k dt_k psi_i(s_k) s_k f_k / sum_k dt_k psi_i(s_k) s_k^2
+/// with trapezoid weights dt_k, so that non-uniform sampling does not bias the fit towards dense parts.
+///
+/// g == x0: with the paper's scaling (g - x0) the forcing term of a joint that returns to its start
+/// vanishes (or, nearly there, is hugely amplified on a new goal). learn() detects |g - x0| below
+/// degenerate_ratio times the joint's demonstrated range and adds a warning. The remedy is
+/// AmplitudeScaling::demo_amplitude (or ::automatic for just those joints): the forcing term is then
+/// scaled by the demonstrated range, a constant, and the joint's motion is reproduced around any goal.
+///
+/// Rollout: 4th-order Runge-Kutta on (x, v), exact exponential decay of the phase; steps longer than a
+/// fifth of the basis spacing are split internally, so a coarse control period loses no accuracy.
+class Dmp
+{
+public:
+  /// \brief Learns from a demonstration (>= 3 samples, strictly increasing finite times, finite
+  /// positions; recorded velocities are not used). Throws DmpError naming the problem.
+  static Dmp learn(const vrrw_trajectory::JointTrajectory& demo, const DmpParameters& parameters,
+                   const DmpProvenance& provenance = {});
+
+  /// \brief Sets every field directly (used by the model loader); validates sizes.
+  Dmp(std::vector<std::string> joint_names, DmpParameters parameters, GaussianBasis basis,
+      std::vector<std::vector<double>> weights, std::vector<double> demo_start, std::vector<double> demo_goal,
+      std::vector<double> demo_amplitude, std::vector<AmplitudeScaling> joint_scaling, double demo_duration,
+      DmpProvenance provenance, std::vector<std::string> warnings = {});
+
+  /// \brief Rolls out from t = 0 for tau (the demo's duration scaled), then on until every joint has
+  /// settled at its goal within the request's tolerances (at most 4 tau). Samples every dt.
+  vrrw_trajectory::JointTrajectory rollout(const RolloutRequest& request) const;
+
+  /// \brief A fresh state at \a start (at rest) heading for \a goal; allocates. Throws DmpError.
+  DmpState begin(const std::vector<double>& start, const std::vector<double>& goal, double tau) const;
+  /// \brief Advances \a state by \a dt seconds. Allocation-free; call it from a control loop.
+  void step(DmpState& state, double dt) const;
+
+  std::size_t dofs() const { return joint_names_.size(); }
+  const std::vector<std::string>& jointNames() const { return joint_names_; }
+  const DmpParameters& parameters() const { return parameters_; }
+  const GaussianBasis& basis() const { return basis_; }
+  /// \brief weights()[joint][basis]
+  const std::vector<std::vector<double>>& weights() const { return weights_; }
+  const std::vector<double>& demoStart() const { return demo_start_; }
+  const std::vector<double>& demoGoal() const { return demo_goal_; }
+  const std::vector<double>& demoAmplitude() const { return demo_amplitude_; }
+  /// \brief The scaling each joint uses (never AmplitudeScaling::automatic).
+  const std::vector<AmplitudeScaling>& jointScaling() const { return joint_scaling_; }
+  double demoDuration() const { return demo_duration_; }
+  const DmpProvenance& provenance() const { return provenance_; }
+  /// \brief One line per concern found while learning (e.g. g == x0 in a joint).
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+private:
+  /// Steps longer than this fraction of the basis spacing (in time) are split, so that the forcing
+  /// term's bumps are resolved at any dt.
+  static constexpr double kMaxSubstep = 0.2;
+
+  void forcingAt(double s, double* psi, double* forcing) const;
+  void integrate(DmpState& state, double dt) const;
+
+  std::vector<std::string> joint_names_;
+  DmpParameters parameters_;
+  GaussianBasis basis_;
+  std::vector<std::vector<double>> weights_;
+  std::vector<double> demo_start_;
+  std::vector<double> demo_goal_;
+  std::vector<double> demo_amplitude_;
+  std::vector<AmplitudeScaling> joint_scaling_;
+  double demo_duration_ = 0.0;
+  DmpProvenance provenance_;
+  std::vector<std::string> warnings_;
+};
+}  // namespace vrrw_dmp

@@ -1,0 +1,367 @@
+#include "vrrw_dmp/dmp.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+
+#include "vrrw_dmp/dmp_error.h"
+#include "vrrw_dmp/local_polynomial_derivative.h"
+
+namespace vrrw_dmp
+{
+namespace
+{
+std::string format(double value)
+{
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.6g", value);
+  return buffer;
+}
+
+std::string utcNow()
+{
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char buffer[32];
+  std::strftime(buffer, sizeof(buffer), "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return buffer;
+}
+
+std::string checksum(const vrrw_trajectory::JointTrajectory& demo)
+{
+  std::uint64_t hash = 1469598103934665603ull;
+  auto mix = [&hash](double value) {
+    unsigned char bytes[sizeof(double)];
+    std::memcpy(bytes, &value, sizeof(double));
+    for (unsigned char b : bytes)
+      hash = (hash ^ b) * 1099511628211ull;
+  };
+  for (const auto& point : demo.points)
+  {
+    mix(point.time);
+    for (double q : point.positions)
+      mix(q);
+  }
+  char buffer[20];
+  std::snprintf(buffer, sizeof(buffer), "%016llx", static_cast<unsigned long long>(hash));
+  return buffer;
+}
+
+void checkDemo(const vrrw_trajectory::JointTrajectory& demo)
+{
+  const std::size_t n = demo.joint_names.size();
+  if (n == 0)
+    throw DmpError("demo: no joints");
+  if (demo.points.size() < 3)
+    throw DmpError("demo: " + std::to_string(demo.points.size()) + " sample(s), learning needs at least 3");
+  for (std::size_t k = 0; k < demo.points.size(); ++k)
+  {
+    const auto& point = demo.points[k];
+    const std::string where = "demo: sample " + std::to_string(k) + ": ";
+    if (point.positions.size() != n)
+      throw DmpError(where + std::to_string(point.positions.size()) + " positions for " + std::to_string(n) +
+                     " joints");
+    if (!std::isfinite(point.time))
+      throw DmpError(where + "time is not finite");
+    if (k > 0 && !(point.time > demo.points[k - 1].time))
+      throw DmpError(where + "time " + format(point.time) + " is not after " + format(demo.points[k - 1].time));
+    for (std::size_t j = 0; j < n; ++j)
+      if (!std::isfinite(point.positions[j]))
+        throw DmpError(where + "joint '" + demo.joint_names[j] + "' position is not finite");
+  }
+}
+
+void checkVector(const std::vector<double>& values, std::size_t n, const std::string& what)
+{
+  if (values.size() != n)
+    throw DmpError(what + ": " + std::to_string(values.size()) + " values for " + std::to_string(n) + " joints");
+  for (std::size_t j = 0; j < n; ++j)
+    if (!std::isfinite(values[j]))
+      throw DmpError(what + ": value " + std::to_string(j + 1) + " is not finite");
+}
+}  // namespace
+
+Dmp::Dmp(std::vector<std::string> joint_names, DmpParameters parameters, GaussianBasis basis,
+         std::vector<std::vector<double>> weights, std::vector<double> demo_start, std::vector<double> demo_goal,
+         std::vector<double> demo_amplitude, std::vector<AmplitudeScaling> joint_scaling, double demo_duration,
+         DmpProvenance provenance, std::vector<std::string> warnings)
+  : joint_names_(std::move(joint_names))
+  , parameters_(parameters)
+  , basis_(std::move(basis))
+  , weights_(std::move(weights))
+  , demo_start_(std::move(demo_start))
+  , demo_goal_(std::move(demo_goal))
+  , demo_amplitude_(std::move(demo_amplitude))
+  , joint_scaling_(std::move(joint_scaling))
+  , demo_duration_(demo_duration)
+  , provenance_(std::move(provenance))
+  , warnings_(std::move(warnings))
+{
+  parameters_.validate();
+  const std::size_t n = joint_names_.size();
+  if (n == 0)
+    throw DmpError("model: no joints");
+  if (basis_.size() != parameters_.basis_count || basis_.widths().size() != basis_.size())
+    throw DmpError("model: " + std::to_string(basis_.size()) + " basis centres/" +
+                   std::to_string(basis_.widths().size()) + " widths for N = " +
+                   std::to_string(parameters_.basis_count));
+  checkVector(demo_start_, n, "model: demo start");
+  checkVector(demo_goal_, n, "model: demo goal");
+  checkVector(demo_amplitude_, n, "model: demo amplitude");
+  checkVector(basis_.centers(), basis_.size(), "model: basis centres");
+  checkVector(basis_.widths(), basis_.size(), "model: basis widths");
+  if (weights_.size() != n || joint_scaling_.size() != n)
+    throw DmpError("model: weights or scaling not given for each of the " + std::to_string(n) + " joints");
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    checkVector(weights_[j], basis_.size(), "model: weights of joint '" + joint_names_[j] + "'");
+    if (joint_scaling_[j] == AmplitudeScaling::automatic)
+      throw DmpError("model: joint '" + joint_names_[j] + "' scaling must be goal or amplitude");
+  }
+  if (!(demo_duration_ > 0.0) || !std::isfinite(demo_duration_))
+    throw DmpError("model: demo duration " + format(demo_duration_) + " must be > 0");
+}
+
+Dmp Dmp::learn(const vrrw_trajectory::JointTrajectory& demo, const DmpParameters& parameters,
+               const DmpProvenance& provenance)
+{
+  parameters.validate();
+  checkDemo(demo);
+  const std::size_t n = demo.joint_names.size();
+  const std::size_t samples = demo.points.size();
+  const double t0 = demo.points.front().time;
+  const double duration = demo.points.back().time - t0;
+
+  std::vector<double> times(samples);
+  std::vector<double> y(samples * n);
+  for (std::size_t k = 0; k < samples; ++k)
+  {
+    times[k] = demo.points[k].time - t0;
+    std::copy(demo.points[k].positions.begin(), demo.points[k].positions.end(), y.begin() + k * n);
+  }
+  std::vector<double> yd(samples * n);
+  std::vector<double> ydd(samples * n);
+  const LocalPolynomialDerivative derivative(times, parameters.derivative_half_window);
+  for (std::size_t j = 0; j < n; ++j)
+    derivative.apply(y.data() + j, n, yd.data() + j, ydd.data() + j);
+
+  std::vector<double> start(y.begin(), y.begin() + n);
+  std::vector<double> goal(y.end() - n, y.end());
+  std::vector<double> amplitude(n);
+  std::vector<AmplitudeScaling> scaling(n);
+  std::vector<double> scale(n);
+  std::vector<std::string> warnings;
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    double low = y[j];
+    double high = y[j];
+    for (std::size_t k = 0; k < samples; ++k)
+    {
+      low = std::min(low, y[k * n + j]);
+      high = std::max(high, y[k * n + j]);
+    }
+    amplitude[j] = high - low;
+    const double offset = goal[j] - start[j];
+    const bool degenerate = amplitude[j] > 0.0 && std::abs(offset) <= parameters.degenerate_ratio * amplitude[j];
+    scaling[j] = parameters.scaling == AmplitudeScaling::automatic ?
+                     (degenerate ? AmplitudeScaling::demo_amplitude : AmplitudeScaling::goal_offset) :
+                     parameters.scaling;
+    if (degenerate && scaling[j] == AmplitudeScaling::goal_offset)
+      warnings.push_back("joint '" + demo.joint_names[j] + "': g - x0 = " + format(offset) +
+                         " is within " + format(100.0 * parameters.degenerate_ratio) +
+                         "% of the demonstrated range " + format(amplitude[j]) +
+                         ", so the forcing term (scaled by g - x0) " +
+                         (offset == 0.0 ? "vanishes and the motion is lost" : "explodes on a new goal") +
+                         "; learn with scaling 'auto' or 'amplitude' to scale by the demonstrated range instead");
+    else if (degenerate)
+      warnings.push_back("joint '" + demo.joint_names[j] + "': g - x0 = " + format(offset) +
+                         " is within " + format(100.0 * parameters.degenerate_ratio) +
+                         "% of the demonstrated range; its forcing term is scaled by the range " +
+                         format(amplitude[j]));
+    if (scaling[j] == AmplitudeScaling::goal_offset)
+      scale[j] = offset;
+    else
+      scale[j] = amplitude[j] > 0.0 ? amplitude[j] : 1.0;
+  }
+
+  const GaussianBasis basis(parameters.basis_count, parameters.alpha);
+  const std::size_t count = basis.size();
+  const double K = parameters.K;
+  const double D = parameters.damping();
+  std::vector<double> numerator(n * count, 0.0);
+  std::vector<double> denominator(count, 0.0);
+  std::vector<double> psi(count);
+  std::vector<double> target(n);
+  for (std::size_t k = 0; k < samples; ++k)
+  {
+    const double s = std::exp(-parameters.alpha * times[k] / duration);
+    const double quadrature = 0.5 * (times[std::min(k + 1, samples - 1)] - times[k > 0 ? k - 1 : 0]);
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      const std::size_t at = k * n + j;
+      const double force = duration * duration * ydd[at] - K * (goal[j] - y[at]) + D * duration * yd[at];
+      target[j] = scale[j] != 0.0 ? force / scale[j] : 0.0;
+    }
+    std::size_t first = 0;
+    std::size_t last = 0;
+    const double peak = std::exp(basis.evaluate(s, psi.data(), first, last));
+    for (std::size_t i = first; i < last; ++i)
+    {
+      const double weight = quadrature * peak * psi[i] * s;
+      denominator[i] += weight * s;
+      double* row = numerator.data() + i * n;
+      for (std::size_t j = 0; j < n; ++j)
+        row[j] += weight * target[j];
+    }
+  }
+  std::vector<std::vector<double>> weights(n, std::vector<double>(count, 0.0));
+  for (std::size_t i = 0; i < count; ++i)
+    if (denominator[i] > 0.0)
+      for (std::size_t j = 0; j < n; ++j)
+        weights[j][i] = numerator[i * n + j] / denominator[i];
+
+  DmpProvenance origin = provenance;
+  if (origin.created.empty())
+    origin.created = utcNow();
+  origin.samples = samples;
+  origin.demo_checksum = checksum(demo);
+  return Dmp(demo.joint_names, parameters, basis, std::move(weights), std::move(start), std::move(goal),
+             std::move(amplitude), std::move(scaling), duration, std::move(origin), std::move(warnings));
+}
+
+DmpState Dmp::begin(const std::vector<double>& start, const std::vector<double>& goal, double tau) const
+{
+  const std::size_t n = dofs();
+  checkVector(start, n, "start");
+  checkVector(goal, n, "goal");
+  if (!(tau > 0.0) || !std::isfinite(tau))
+    throw DmpError("tau = " + format(tau) + ": must be a finite number > 0");
+  DmpState state;
+  state.tau = tau;
+  state.positions = start;
+  state.velocities.assign(n, 0.0);
+  state.accelerations.assign(n, 0.0);
+  state.start = start;
+  state.goal = goal;
+  state.scale.resize(n);
+  for (std::size_t j = 0; j < n; ++j)
+    state.scale[j] = joint_scaling_[j] == AmplitudeScaling::goal_offset ? goal[j] - start[j] :
+                                                                          (demo_amplitude_[j] > 0.0 ? demo_amplitude_[j] : 1.0);
+  state.scaled_velocity.assign(n, 0.0);
+  state.forcing.resize(n);
+  state.forcing_mid.resize(n);
+  state.forcing_end.resize(n);
+  state.psi.resize(basis_.size());
+  forcingAt(state.phase, state.psi.data(), state.forcing.data());
+  const double K = parameters_.K;
+  for (std::size_t j = 0; j < n; ++j)
+    state.accelerations[j] = (K * (goal[j] - start[j]) + state.scale[j] * state.forcing[j]) / (tau * tau);
+  return state;
+}
+
+void Dmp::forcingAt(double s, double* psi, double* forcing) const
+{
+  std::size_t first = 0;
+  std::size_t last = 0;
+  basis_.evaluate(s, psi, first, last);
+  double sum = 0.0;
+  for (std::size_t i = first; i < last; ++i)
+    sum += psi[i];
+  const double factor = s / sum;
+  for (std::size_t j = 0; j < weights_.size(); ++j)
+  {
+    const double* w = weights_[j].data();
+    double blend = 0.0;
+    for (std::size_t i = first; i < last; ++i)
+      blend += w[i] * psi[i];
+    forcing[j] = blend * factor;
+  }
+}
+
+void Dmp::step(DmpState& state, double dt) const
+{
+  const double longest = kMaxSubstep * state.tau / static_cast<double>(std::max<std::size_t>(basis_.size(), 2) - 1);
+  const auto substeps = static_cast<std::size_t>(std::ceil(dt / longest));
+  for (std::size_t i = 0; i < substeps; ++i)
+    integrate(state, dt / static_cast<double>(substeps));
+  state.time += dt;
+}
+
+void Dmp::integrate(DmpState& state, double dt) const
+{
+  const double tau = state.tau;
+  const double s_end = state.phase * std::exp(-parameters_.alpha * dt / tau);
+  const double s_mid = state.phase * std::exp(-0.5 * parameters_.alpha * dt / tau);
+  forcingAt(s_mid, state.psi.data(), state.forcing_mid.data());
+  forcingAt(s_end, state.psi.data(), state.forcing_end.data());
+  const double K = parameters_.K;
+  const double D = parameters_.damping();
+  const double h = dt;
+  for (std::size_t j = 0; j < dofs(); ++j)
+  {
+    const double g = state.goal[j];
+    const double c = state.scale[j];
+    auto accel = [&](double x, double v, double f) { return (K * (g - x) - D * v + c * f) / tau; };
+    const double x = state.positions[j];
+    const double v = state.scaled_velocity[j];
+    const double k1x = v / tau;
+    const double k1v = accel(x, v, state.forcing[j]);
+    const double k2x = (v + 0.5 * h * k1v) / tau;
+    const double k2v = accel(x + 0.5 * h * k1x, v + 0.5 * h * k1v, state.forcing_mid[j]);
+    const double k3x = (v + 0.5 * h * k2v) / tau;
+    const double k3v = accel(x + 0.5 * h * k2x, v + 0.5 * h * k2v, state.forcing_mid[j]);
+    const double k4x = (v + h * k3v) / tau;
+    const double k4v = accel(x + h * k3x, v + h * k3v, state.forcing_end[j]);
+    const double x_next = x + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
+    const double v_next = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+    state.positions[j] = x_next;
+    state.scaled_velocity[j] = v_next;
+    state.velocities[j] = v_next / tau;
+    state.accelerations[j] = accel(x_next, v_next, state.forcing_end[j]) / tau;
+    state.forcing[j] = state.forcing_end[j];
+  }
+  state.phase = s_end;
+}
+
+vrrw_trajectory::JointTrajectory Dmp::rollout(const RolloutRequest& request) const
+{
+  const double tau = request.tau > 0.0 ? request.tau : demo_duration_;
+  if (!(request.dt > 0.0) || !std::isfinite(request.dt))
+    throw DmpError("dt = " + format(request.dt) + ": must be a finite number > 0");
+  if (request.tau < 0.0 || !std::isfinite(request.tau))
+    throw DmpError("tau = " + format(request.tau) + ": must be a finite number > 0");
+  if (!(request.goal_tolerance > 0.0) || !(request.rest_tolerance > 0.0))
+    throw DmpError("rollout tolerances must be > 0");
+  if (request.dt > tau)
+    throw DmpError("dt = " + format(request.dt) + " is longer than tau = " + format(tau));
+  DmpState state = begin(request.start.empty() ? demo_start_ : request.start,
+                         request.goal.empty() ? demo_goal_ : request.goal, tau);
+  const auto nominal_steps = static_cast<std::size_t>(std::ceil(tau / request.dt - 1e-9));
+  const std::size_t max_steps = 4 * nominal_steps;
+  vrrw_trajectory::JointTrajectory trajectory;
+  trajectory.joint_names = joint_names_;
+  trajectory.points.reserve(nominal_steps + 1);
+  for (std::size_t k = 0;; ++k)
+  {
+    trajectory.points.push_back({ static_cast<double>(k) * request.dt, state.positions, state.velocities,
+                                  state.accelerations });
+    if (k >= max_steps)
+      break;
+    if (k >= nominal_steps)
+    {
+      bool settled = true;
+      for (std::size_t j = 0; j < dofs() && settled; ++j)
+        settled = std::abs(state.goal[j] - state.positions[j]) <= request.goal_tolerance &&
+                  std::abs(state.scaled_velocity[j]) <= request.rest_tolerance;
+      if (settled)
+        break;
+    }
+    step(state, request.dt);
+  }
+  return trajectory;
+}
+}  // namespace vrrw_dmp
