@@ -86,6 +86,22 @@ int main(int argc, char** argv)
   ROS_INFO("scene %s: %zu robots, %zu objects, loaded in %.3f s (%s)", scene.name.c_str(), scene.robots.size(),
            scene.objects.size(), scene.load_seconds, scene.from_cache ? "cache" : "xacro");
 
+  for (const auto& robot : scene.robots)
+  {
+    const std::string key = "scene/robots/" + robot.name + "/";
+    nh.setParam(key + "model", robot.model);
+    nh.setParam(key + "gripper", robot.gripper);
+    nh.setParam(key + "base_link", robot.base_link);
+    nh.setParam(key + "arm_base_link", robot.arm_base_link);
+    nh.setParam(key + "tool_link", robot.tool_link);
+    nh.setParam(key + "tcp_link", robot.tcp_link);
+    nh.setParam(key + "arm_joints", robot.arm_joints);
+    nh.setParam(key + "gripper_joints", robot.gripper_joints);
+    nh.setParam(key + "config_file", robot.config_file);
+  }
+  nh.setParam("scene/name", scene.name);
+  nh.setParam("scene/file", scene.source_file);
+
   tf2_ros::StaticTransformBroadcaster static_tf;
   visualization_msgs::MarkerArray markers;
   std::vector<geometry_msgs::TransformStamped> object_frames;

@@ -1,0 +1,185 @@
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <filesystem>
+#include <fstream>
+
+#include "vrrw_scene/scene_loader.h"
+
+namespace fs = std::filesystem;
+using vrrw_scene::LoadOptions;
+using vrrw_scene::loadScene;
+using vrrw_scene::SceneError;
+
+namespace
+{
+LoadOptions testOptions()
+{
+  static const std::string cache = fs::temp_directory_path() / ("vrrw_scene_test_" + std::to_string(getpid()));
+  LoadOptions options;
+  options.root = VRRW_TEST_ROOT;
+  options.cache_dir = cache;
+  return options;
+}
+
+std::string testFile(const std::string& name)
+{
+  return std::string(VRRW_TEST_ROOT) + "/test/" + name;
+}
+
+/// The one-line message a bad scene gets.
+std::string errorOf(const std::string& file)
+{
+  try
+  {
+    loadScene(testFile("bad_input/" + file), testOptions());
+  }
+  catch (const SceneError& e)
+  {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    return message;
+  }
+  ADD_FAILURE() << file << " loaded without an error";
+  return "";
+}
+
+void expectMentions(const std::string& message, std::initializer_list<const char*> parts)
+{
+  for (const char* part : parts)
+    EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' missing from: " << message;
+}
+}  // namespace
+
+TEST(BadScene, MalformedYamlNamesFileAndLine)
+{
+  expectMentions(errorOf("malformed_yaml.yaml"), { "malformed_yaml.yaml:", "malformed YAML" });
+}
+
+TEST(BadScene, UnknownModelListsKnownOnes)
+{
+  expectMentions(errorOf("unknown_model.yaml"), { "unknown_model.yaml:3:", "robots[0].model", "'ur7e'", "ur5e" });
+}
+
+TEST(BadScene, UnknownGripper)
+{
+  expectMentions(errorOf("unknown_gripper.yaml"), { "unknown_gripper.yaml:4:", "robots[0].gripper", "'robotiq_3f'" });
+}
+
+TEST(BadScene, DuplicateRobotName)
+{
+  expectMentions(errorOf("duplicate_name.yaml"), { "duplicate_name.yaml:4:", "robots[1].name", "used twice" });
+}
+
+TEST(BadScene, MissingObjectMesh)
+{
+  expectMentions(errorOf("missing_mesh.yaml"), { "missing_mesh.yaml:4:", "objects[0].mesh", "does not exist" });
+}
+
+TEST(BadScene, MissingRobotMesh)
+{
+  expectMentions(errorOf("missing_mesh_robot.yaml"), { "missing_mesh.urdf", "link 'link2'", "forearm_missing.stl",
+                                                       "does not exist" });
+}
+
+TEST(BadScene, NonNumericPose)
+{
+  expectMentions(errorOf("non_numeric_pose.yaml"), { "non_numeric_pose.yaml:4:", "robots[0].base.xyz[1]",
+                                                     "expected a number, got 'left'" });
+}
+
+TEST(BadScene, JointWithMissingParentLink)
+{
+  expectMentions(errorOf("bad_parent_link.yaml"), { "bad_parent_link.urdf:5:", "joint 'joint1'",
+                                                    "parent link 'link0' does not exist" });
+}
+
+TEST(BadScene, UnknownSceneNameListsShippedScenes)
+{
+  try
+  {
+    loadScene("no_such_scene", testOptions());
+    FAIL();
+  }
+  catch (const SceneError& e)
+  {
+    expectMentions(e.what(), { "no_such_scene", "pick_place_drill" });
+  }
+}
+
+TEST(CustomScene, PrefixesEveryNameAndFindsTheChain)
+{
+  const auto scene = loadScene(testFile("scenes/custom_robot.yaml"), testOptions());
+  ASSERT_EQ(scene.robots.size(), 1u);
+  const auto& robot = scene.robots[0];
+  EXPECT_EQ(robot.base_link, "left_base");
+  EXPECT_EQ(robot.tcp_link, "left_tip");
+  EXPECT_EQ(robot.arm_joints, (std::vector<std::string>{ "left_joint1", "left_joint2" }));
+  EXPECT_DOUBLE_EQ(robot.initial_positions.at("left_joint2"), 0.1);
+  EXPECT_DOUBLE_EQ(robot.initial_positions.at("left_joint1"), 0.0);
+  EXPECT_NEAR(robot.base_pose.translation().y(), 0.5, 1e-12);
+  EXPECT_NE(scene.urdf.find("name=\"left_base_joint\""), std::string::npos);
+  EXPECT_EQ(scene.urdf.find("name=\"joint1\""), std::string::npos);
+}
+
+TEST(CustomScene, PrimitiveObjectsHaveBoxAndCylinderInertia)
+{
+  const auto scene = loadScene(testFile("scenes/custom_robot.yaml"), testOptions());
+  const auto* crate = scene.object("crate");
+  ASSERT_NE(crate, nullptr);
+  EXPECT_DOUBLE_EQ(crate->mass, 2.0);
+  EXPECT_NEAR(crate->inertia(0, 0), 2.0 / 12 * (0.04 + 0.01), 1e-12);
+  EXPECT_NEAR(crate->inertia(2, 2), 2.0 / 12 * (0.16 + 0.04), 1e-12);
+  EXPECT_FALSE(crate->fixed);
+  // Seeded random placement: x within 1 +- 0.1, drawn the same on every load.
+  EXPECT_GE(crate->pose.translation().x(), 0.9);
+  EXPECT_LE(crate->pose.translation().x(), 1.1);
+  const auto again = loadScene(testFile("scenes/custom_robot.yaml"), testOptions());
+  EXPECT_TRUE(again.object("crate")->pose.isApprox(crate->pose, 0.0));
+  EXPECT_TRUE(scene.object("post")->fixed);
+}
+
+TEST(ShippedScene, SecondLoadComesFromTheCacheWithTheSameUrdf)
+{
+  LoadOptions cold = testOptions();
+  cold.use_cache = false;
+  const auto first = loadScene("pick_place_drill", cold);
+  const auto second = loadScene("pick_place_drill", testOptions());
+  EXPECT_FALSE(first.from_cache);
+  EXPECT_TRUE(second.from_cache);
+  EXPECT_EQ(first.urdf, second.urdf);
+  EXPECT_LT(second.load_seconds, first.load_seconds);
+}
+
+TEST(ShippedScene, ObjectsAreOutOfTheRobotUrdfAndHaveMass)
+{
+  const auto scene = loadScene("pick_place_drill", testOptions());
+  const auto* drill = scene.object("drill");
+  ASSERT_NE(drill, nullptr);
+  EXPECT_GT(drill->mass, 1.0);
+  EXPECT_LT(drill->mass, 2.5);
+  EXPECT_GE(drill->collision.size(), 3u);  // handle, body, battery
+  EXPECT_TRUE(scene.object("table")->fixed);
+  EXPECT_EQ(scene.urdf.find("drill_"), std::string::npos);
+  EXPECT_EQ(scene.urdf.find("table_"), std::string::npos);
+  // The inertia is physical: positive definite and obeying the triangle inequality.
+  const Eigen::Vector3d principal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(drill->inertia).eigenvalues();
+  EXPECT_GT(principal.minCoeff(), 0.0);
+  EXPECT_LE(principal.maxCoeff(), principal.sum() - principal.maxCoeff() + 1e-12);
+}
+
+TEST(ShippedScene, MultibotRobotsArePrefixedByTheirNames)
+{
+  const auto scene = loadScene("paper_multibot", testOptions());
+  ASSERT_EQ(scene.robots.size(), 4u);
+  for (const auto& robot : scene.robots)
+  {
+    for (const auto& joint : robot.arm_joints)
+      EXPECT_EQ(joint.rfind(robot.name + "_", 0), 0u) << joint;
+    EXPECT_EQ(robot.tcp_link, robot.name + "_tcp");
+    EXPECT_FALSE(robot.gripper_joints.empty()) << robot.name;
+  }
+  EXPECT_EQ(scene.robot("fetch")->arm_joints.size(), 7u);
+  EXPECT_EQ(scene.robot("ur10e")->gripper, "robotiq_2f_140");
+}
