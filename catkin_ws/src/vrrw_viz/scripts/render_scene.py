@@ -20,7 +20,7 @@ import time
 import yaml
 
 ROOT = os.environ.get('VRRW_ROOT', os.path.abspath(os.path.join(os.path.dirname(__file__), '../../../..')))
-BACKGROUND = (40, 44, 52)
+BACKGROUND = (206, 212, 220)
 
 
 def log(message):
@@ -41,11 +41,12 @@ def free_display():
 
 
 def render_config(path, width, height, hidden):
-    """The shipped rviz config with docks hidden, a dark background and the given displays off."""
+    """The shipped rviz config without panels, on a plain background, with the given displays off."""
     with open(os.path.join(ROOT, 'launch', 'vrrw.rviz')) as f:
         config = yaml.safe_load(f)
     config['Window Geometry'].update({'Width': width, 'Height': height, 'X': 0, 'Y': 0,
                                       'Hide Left Dock': True, 'Hide Right Dock': True})
+    config['Panels'] = []
     manager = config['Visualization Manager']
     manager['Global Options']['Background Color'] = '; '.join(str(c) for c in BACKGROUND)
     for display in manager['Displays']:
