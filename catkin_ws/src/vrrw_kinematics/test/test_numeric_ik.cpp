@@ -1,0 +1,112 @@
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "fixtures.h"
+#include "vrrw_kinematics/numeric_ik.h"
+
+using namespace vrrw_kinematics;
+
+namespace
+{
+struct Tally
+{
+  int success = 0;
+  double worst_position = 0.0;
+  double worst_orientation = 0.0;
+};
+
+Tally roundTrip(const KinematicChain& chain, const IkOptions& options, int samples)
+{
+  const NumericIK ik(chain);
+  std::mt19937_64 rng(21);
+  Tally tally;
+  for (int s = 0; s < samples; ++s)
+  {
+    const Eigen::Isometry3d target = chain.fk(chain.randomState(rng));
+    const IkResult result = ik.solve(target, chain.midLimits(), options);
+    if (!result.success)
+      continue;
+    EXPECT_TRUE(chain.withinLimits(result.q));
+    const Eigen::Isometry3d reached = chain.fk(result.q);
+    tally.worst_position = std::max(tally.worst_position, (reached.translation() - target.translation()).norm());
+    tally.worst_orientation =
+        std::max(tally.worst_orientation, rotationError(target.linear(), reached.linear()).norm());
+    ++tally.success;
+  }
+  return tally;
+}
+}  // namespace
+
+TEST(NumericIK, PandaAndIiwaRoundTrips)
+{
+  IkOptions options;
+  options.timeout = 0.02;
+  for (const auto& c : { std::make_pair("panda.urdf", "panda"), std::make_pair("iiwa14.urdf", "iiwa") })
+  {
+    const std::string prefix = c.second;
+    const KinematicChain chain = KinematicChain::fromUrdf(fixture(c.first), prefix + "_link0", prefix + "_link8");
+    const Tally tally = roundTrip(chain, options, 300);
+    EXPECT_GE(tally.success, 299) << c.first;
+    EXPECT_LE(tally.worst_position, 1e-5);
+    EXPECT_LE(tally.worst_orientation, 1e-5);
+  }
+}
+
+TEST(NumericIK, SolvesUr5eNumericallyToo)
+{
+  const KinematicChain chain = KinematicChain::fromUrdf(fixture("ur5e.urdf"), "base_link", "tool0");
+  IkOptions options;
+  options.timeout = 0.02;
+  EXPECT_GE(roundTrip(chain, options, 200).success, 199);
+}
+
+TEST(NumericIK, PositionOnlyOnPrismaticChain)
+{
+  const KinematicChain chain = KinematicChain::fromUrdf(fixture("gantry.urdf"), "base", "tip");
+  IkOptions options;
+  options.mode = IkOptions::Mode::PositionOnly;
+  const Tally tally = roundTrip(chain, options, 200);
+  EXPECT_EQ(tally.success, 200);
+  EXPECT_LE(tally.worst_position, 1e-5);
+}
+
+TEST(NumericIK, OrientationTolerantStaysWithinTolerance)
+{
+  const KinematicChain chain = KinematicChain::fromUrdf(fixture("panda.urdf"), "panda_link0", "panda_link8");
+  const NumericIK ik(chain);
+  std::mt19937_64 rng(4);
+  IkOptions options;
+  options.mode = IkOptions::Mode::OrientationTolerant;
+  options.orientation_tolerance = 0.2;
+  options.timeout = 0.02;
+  int success = 0;
+  for (int s = 0; s < 100; ++s)
+  {
+    Eigen::Isometry3d target = chain.fk(chain.randomState(rng));
+    target.linear() = target.linear() * Eigen::AngleAxisd(0.15, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    const IkResult result = ik.solve(target, chain.midLimits(), options);
+    if (!result.success)
+      continue;
+    ++success;
+    const Eigen::Isometry3d reached = chain.fk(result.q);
+    EXPECT_LE((reached.translation() - target.translation()).norm(), 1e-5);
+    EXPECT_LE(rotationError(target.linear(), reached.linear()).norm(), 0.2 + 1e-5);
+  }
+  EXPECT_GE(success, 99);
+}
+
+TEST(NumericIK, UnreachableTargetTimesOut)
+{
+  const KinematicChain chain = KinematicChain::fromUrdf(fixture("panda.urdf"), "panda_link0", "panda_link8");
+  const NumericIK ik(chain);
+  Eigen::Isometry3d far = Eigen::Isometry3d::Identity();
+  far.translation() << 3.0, 0.0, 0.0;
+  IkOptions options;
+  options.timeout = 0.005;
+  const IkResult result = ik.solve(far, chain.midLimits(), options);
+  EXPECT_FALSE(result.success);
+  EXPECT_EQ(result.code, ErrorCode::NoSolution);
+  EXPECT_GT(result.attempts, 1);
+  EXPECT_NE(result.message.find("panda_link8"), std::string::npos);
+}
