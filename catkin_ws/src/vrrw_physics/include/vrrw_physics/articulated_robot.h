@@ -1,0 +1,125 @@
+#pragma once
+#include <vrrw_physics/joint_drive.h>
+
+#include <Eigen/Geometry>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <urdf_model/model.h>
+
+class btMultiBody;
+class btMultiBodyDynamicsWorld;
+class btMultiBodyLinkCollider;
+class btMultiBodyJointLimitConstraint;
+class btCollisionShape;
+
+namespace vrrw_physics
+{
+/// \brief Contact material of every link of a robot.
+struct LinkMaterial
+{
+  double friction = 1.0;
+  double restitution = 0.0;
+};
+
+/// \brief A movable URDF joint as simulated.
+struct SimJoint
+{
+  std::string name;
+  int link = -1;              ///< Bullet link index of its child
+  bool prismatic = false;
+  bool limited = false;
+  double lower = 0.0;
+  double upper = 0.0;
+  double max_effort = 0.0;    ///< from the URDF, 0 when absent
+  double max_velocity = 0.0;  ///< from the URDF, 0 when absent
+  int drive = -1;             ///< index into drives(), -1 for a mimic joint
+  int mimic = -1;             ///< index in joints() of the joint it mimics, -1 when none
+  double multiplier = 1.0;    ///< q = multiplier * q_master + offset
+  double offset = 0.0;
+};
+
+/// \brief One robot as a single Featherstone btMultiBody built from a URDF subtree.
+///
+/// Links joined by fixed joints are merged (mass, inertia, collision shapes); every movable joint
+/// (revolute, continuous, prismatic) becomes a Bullet link whose frame sits at its centre of mass on
+/// the principal axes of inertia. Non-mimic joints get a JointDrive, mimic joints a JointCoupling,
+/// limited joints a btMultiBodyJointLimitConstraint; every Bullet link gets a collider (links without
+/// collision geometry get one that collides with nothing, so its constraints are solved).
+/// Featherstone, "Rigid Body Dynamics Algorithms", 2008.
+class ArticulatedRobot
+{
+public:
+  /// \brief Builds the subtree of `base_link` of `model`, its base fixed at the base link's world pose
+  /// (chained through the joints above it). Throws std::runtime_error naming the link or joint.
+  ArticulatedRobot(const urdf::ModelInterface& model, const std::string& name, const std::string& base_link,
+                   const LinkMaterial& material = LinkMaterial());
+  ~ArticulatedRobot();
+  ArticulatedRobot(const ArticulatedRobot&) = delete;
+  ArticulatedRobot& operator=(const ArticulatedRobot&) = delete;
+
+  /// \brief Adds body, colliders and constraints to `world` (once); removed again by the destructor.
+  void addToWorld(btMultiBodyDynamicsWorld* world);
+
+  const std::string& name() const { return name_; }
+  btMultiBody* body() const { return body_.get(); }
+  /// \brief Every movable joint, depth-first from the base (mimic joints included).
+  const std::vector<SimJoint>& joints() const { return joints_; }
+  /// \brief Index in joints() of a joint name, -1 when unknown.
+  int jointIndex(const std::string& joint) const;
+  std::vector<std::unique_ptr<JointDrive>>& drives() { return drives_; }
+  const std::vector<std::unique_ptr<JointDrive>>& drives() const { return drives_; }
+
+  std::vector<double> positions() const;
+  std::vector<double> velocities() const;
+  /// \brief Joint efforts of the last step: drive (or coupling) force plus feed-forward torque.
+  std::vector<double> efforts(double dt) const;
+  /// \brief Positions of every joint from those of the non-mimic joints (mimic entries are recomputed).
+  std::vector<double> withMimics(std::vector<double> positions) const;
+  /// \brief Sets positions and velocities of every joint (order of joints()) and refreshes frames.
+  void setState(const std::vector<double>& positions, const std::vector<double>& velocities);
+
+  bool hasLink(const std::string& link) const { return links_.count(link) > 0; }
+  /// \brief World pose of a URDF link (merged links included); throws for an unknown link.
+  Eigen::Isometry3d linkPose(const std::string& link) const;
+  /// \brief World velocity of a point given in a link's frame.
+  Eigen::Vector3d pointVelocity(const std::string& link, const Eigen::Vector3d& point) const;
+  /// \brief World angular velocity of a link.
+  Eigen::Vector3d angularVelocity(const std::string& link) const;
+  /// \brief Applies a world force at a point given in a link's frame plus a world torque (for this step).
+  void applyWrench(const std::string& link, const Eigen::Vector3d& point, const Eigen::Vector3d& force,
+                   const Eigen::Vector3d& torque);
+
+  /// \brief Adds joint torques that cancel gravity on the current configuration (explicit feed-forward).
+  void compensateGravity(const Eigen::Vector3d& gravity);
+  /// \brief Forgets the feed-forward torques reported by efforts() (Bullet clears applied torques each step).
+  void clearFeedForward();
+
+private:
+  struct LinkFrame
+  {
+    int body = -1;  ///< -1 for the base
+    Eigen::Isometry3d body_T_link = Eigen::Isometry3d::Identity();
+  };
+  /// World pose of a Bullet link frame (COM, principal axes); -1 for the base.
+  Eigen::Isometry3d bodyPose(int body) const;
+  const LinkFrame& linkFrame(const std::string& link) const;
+  /// World angular and linear (COM) velocity of a Bullet link.
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> bodyVelocity(int body) const;
+
+  std::string name_;
+  std::unique_ptr<btMultiBody> body_;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes_;
+  std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
+  std::vector<std::unique_ptr<JointDrive>> drives_;
+  std::vector<std::unique_ptr<JointCoupling>> couplings_;
+  std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits_;
+  std::vector<SimJoint> joints_;
+  std::vector<double> feed_forward_;
+  std::vector<int> coupling_of_joint_;
+  std::map<std::string, LinkFrame> links_;
+  btMultiBodyDynamicsWorld* world_ = nullptr;
+};
+}  // namespace vrrw_physics

@@ -1,0 +1,514 @@
+#include <vrrw_physics/articulated_robot.h>
+#include <vrrw_physics/mesh_shape.h>
+
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btCompoundShape.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/CollisionShapes/btCylinderShape.h>
+#include <BulletCollision/CollisionShapes/btSphereShape.h>
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <stdexcept>
+
+namespace vrrw_physics
+{
+namespace
+{
+struct CollisionPart
+{
+  Eigen::Isometry3d pose;  ///< in the body's root link frame
+  urdf::GeometrySharedPtr geometry;
+  std::string link;
+};
+
+/// A rigid group of URDF links joined by fixed joints, rooted at one link.
+struct MergedBody
+{
+  int parent = -1;  ///< index into the body list; -1 for the base
+  urdf::JointConstSharedPtr joint;
+  Eigen::Isometry3d parent_T_joint = Eigen::Isometry3d::Identity();  ///< in the parent's root link frame
+  double mass = 0.0;
+  Eigen::Vector3d mass_moment = Eigen::Vector3d::Zero();  ///< sum m_i c_i, root frame
+  Eigen::Matrix3d inertia_origin = Eigen::Matrix3d::Zero();  ///< about the root origin, root frame
+  std::vector<CollisionPart> parts;
+  std::vector<std::pair<std::string, Eigen::Isometry3d>> links;  ///< root_T_link
+  Eigen::Isometry3d root_T_frame = Eigen::Isometry3d::Identity();  ///< Bullet frame: COM, principal axes
+  Eigen::Vector3d principal = Eigen::Vector3d::Zero();
+};
+
+Eigen::Isometry3d toEigen(const urdf::Pose& pose)
+{
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.translate(Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z));
+  t.rotate(Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z));
+  return t;
+}
+
+btVector3 toBullet(const Eigen::Vector3d& v)
+{
+  return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z()));
+}
+
+btQuaternion toBullet(const Eigen::Quaterniond& q)
+{
+  return btQuaternion(btScalar(q.x()), btScalar(q.y()), btScalar(q.z()), btScalar(q.w()));
+}
+
+btTransform toBullet(const Eigen::Isometry3d& t)
+{
+  return btTransform(toBullet(Eigen::Quaterniond(t.rotation())), toBullet(Eigen::Vector3d(t.translation())));
+}
+
+Eigen::Vector3d toEigen(const btVector3& v)
+{
+  return Eigen::Vector3d(v.x(), v.y(), v.z());
+}
+
+Eigen::Quaterniond toEigen(const btQuaternion& q)
+{
+  return Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z());
+}
+
+bool isMovable(const urdf::Joint& joint)
+{
+  return joint.type == urdf::Joint::REVOLUTE || joint.type == urdf::Joint::CONTINUOUS ||
+         joint.type == urdf::Joint::PRISMATIC;
+}
+
+void addLink(const urdf::ModelInterface& model, const urdf::LinkConstSharedPtr& link, int body,
+             const Eigen::Isometry3d& root_T_link, std::vector<MergedBody>& bodies)
+{
+  MergedBody& b = bodies[body];
+  b.links.emplace_back(link->name, root_T_link);
+  if (link->inertial && link->inertial->mass > 0.0)
+  {
+    const urdf::Inertial& in = *link->inertial;
+    const Eigen::Isometry3d root_T_com = root_T_link * toEigen(in.origin);
+    Eigen::Matrix3d local;
+    local << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+    const Eigen::Matrix3d r = root_T_com.rotation();
+    const Eigen::Vector3d c = root_T_com.translation();
+    b.mass += in.mass;
+    b.mass_moment += in.mass * c;
+    b.inertia_origin += r * local * r.transpose() + in.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+  }
+  for (const auto& collision : link->collision_array)
+    if (collision && collision->geometry)
+      b.parts.push_back({ root_T_link * toEigen(collision->origin), collision->geometry, link->name });
+  for (const auto& joint : link->child_joints)
+  {
+    const urdf::LinkConstSharedPtr child = model.getLink(joint->child_link_name);
+    if (!child)
+      throw std::runtime_error("joint " + joint->name + ": child link '" + joint->child_link_name + "' missing");
+    const Eigen::Isometry3d origin = root_T_link * toEigen(joint->parent_to_joint_origin_transform);
+    if (!isMovable(*joint))
+    {
+      if (joint->type != urdf::Joint::FIXED)
+        throw std::runtime_error("joint " + joint->name + ": type not supported (fixed, revolute, continuous, prismatic)");
+      addLink(model, child, body, origin, bodies);
+      continue;
+    }
+    MergedBody next;
+    next.parent = body;
+    next.joint = joint;
+    next.parent_T_joint = origin;
+    bodies.push_back(next);
+    addLink(model, child, int(bodies.size()) - 1, Eigen::Isometry3d::Identity(), bodies);
+  }
+}
+
+void computeFrame(MergedBody& b, const std::string& robot)
+{
+  if (b.mass <= 0.0)
+  {
+    b.mass = 1e-3;
+    b.inertia_origin = 1e-7 * Eigen::Matrix3d::Identity();
+    if (b.joint)
+      b.mass_moment.setZero();
+  }
+  const Eigen::Vector3d com = b.mass_moment / b.mass;
+  const Eigen::Matrix3d inertia =
+      b.inertia_origin - b.mass * (com.squaredNorm() * Eigen::Matrix3d::Identity() - com * com.transpose());
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (inertia + inertia.transpose()));
+  Eigen::Matrix3d axes = eig.eigenvectors();
+  if (axes.determinant() < 0)
+    axes.col(2) = -axes.col(2);
+  b.principal = eig.eigenvalues().cwiseMax(1e-9);
+  b.root_T_frame = Eigen::Isometry3d::Identity();
+  b.root_T_frame.translate(com);
+  b.root_T_frame.rotate(axes);
+  if (!b.principal.allFinite())
+    throw std::runtime_error("robot " + robot + ": link " + b.links.front().first + ": inertia is not finite");
+}
+
+std::unique_ptr<btCollisionShape> makeShape(const urdf::Geometry& geometry, const std::string& link)
+{
+  switch (geometry.type)
+  {
+    case urdf::Geometry::BOX:
+    {
+      const auto& box = static_cast<const urdf::Box&>(geometry);
+      auto shape = std::make_unique<btBoxShape>(btVector3(btScalar(box.dim.x / 2), btScalar(box.dim.y / 2),
+                                                          btScalar(box.dim.z / 2)));
+      shape->setMargin(btScalar(0.001));
+      return shape;
+    }
+    case urdf::Geometry::CYLINDER:
+    {
+      const auto& cyl = static_cast<const urdf::Cylinder&>(geometry);
+      auto shape = std::make_unique<btCylinderShapeZ>(
+          btVector3(btScalar(cyl.radius), btScalar(cyl.radius), btScalar(cyl.length / 2)));
+      shape->setMargin(btScalar(0.001));
+      return shape;
+    }
+    case urdf::Geometry::SPHERE:
+      return std::make_unique<btSphereShape>(btScalar(static_cast<const urdf::Sphere&>(geometry).radius));
+    case urdf::Geometry::MESH:
+    {
+      const auto& mesh = static_cast<const urdf::Mesh&>(geometry);
+      try
+      {
+        return loadConvexHull(resolveMeshPath(mesh.filename), Eigen::Vector3d(mesh.scale.x, mesh.scale.y, mesh.scale.z));
+      }
+      catch (const std::runtime_error& e)
+      {
+        throw std::runtime_error("link " + link + ": collision mesh: " + e.what());
+      }
+    }
+  }
+  throw std::runtime_error("link " + link + ": unknown collision geometry");
+}
+
+Eigen::Isometry3d worldPose(const urdf::ModelInterface& model, const std::string& link)
+{
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  urdf::LinkConstSharedPtr current = model.getLink(link);
+  while (current && current->parent_joint)
+  {
+    pose = toEigen(current->parent_joint->parent_to_joint_origin_transform) * pose;
+    current = model.getLink(current->parent_joint->parent_link_name);
+  }
+  return pose;
+}
+}  // namespace
+
+ArticulatedRobot::ArticulatedRobot(const urdf::ModelInterface& model, const std::string& name,
+                                   const std::string& base_link, const LinkMaterial& material)
+  : name_(name)
+{
+  const urdf::LinkConstSharedPtr base = model.getLink(base_link);
+  if (!base)
+    throw std::runtime_error("robot " + name + ": base link '" + base_link + "' not in the URDF");
+  std::vector<MergedBody> bodies(1);
+  addLink(model, base, 0, Eigen::Isometry3d::Identity(), bodies);
+  for (MergedBody& b : bodies)
+    computeFrame(b, name);
+
+  const int n_links = int(bodies.size()) - 1;
+  const MergedBody& root = bodies[0];
+  body_ = std::make_unique<btMultiBody>(n_links, btScalar(root.mass), toBullet(root.principal), true, false);
+  body_->setBaseWorldTransform(toBullet(worldPose(model, base_link) * root.root_T_frame));
+
+  for (int i = 1; i <= n_links; ++i)
+  {
+    const MergedBody& b = bodies[i];
+    const MergedBody& p = bodies[b.parent];
+    const urdf::Joint& joint = *b.joint;
+    const Eigen::Matrix3d parent_R_this = p.root_T_frame.rotation().transpose() * b.parent_T_joint.rotation() *
+                                          b.root_T_frame.rotation();
+    const btQuaternion rot_parent_to_this = toBullet(Eigen::Quaterniond(parent_R_this.transpose()));
+    const Eigen::Vector3d axis_urdf(joint.axis.x, joint.axis.y, joint.axis.z);
+    const btVector3 axis = toBullet(Eigen::Vector3d(b.root_T_frame.rotation().transpose() * axis_urdf.normalized()));
+    const btVector3 parent_com_to_pivot = toBullet(Eigen::Vector3d(
+        p.root_T_frame.rotation().transpose() * (b.parent_T_joint.translation() - p.root_T_frame.translation())));
+    const btVector3 pivot_to_com =
+        toBullet(Eigen::Vector3d(b.root_T_frame.rotation().transpose() * b.root_T_frame.translation()));
+    const int parent_link = b.parent - 1;
+    if (joint.type == urdf::Joint::PRISMATIC)
+      body_->setupPrismatic(i - 1, btScalar(b.mass), toBullet(b.principal), parent_link, rot_parent_to_this, axis,
+                            parent_com_to_pivot, pivot_to_com, true);
+    else
+      body_->setupRevolute(i - 1, btScalar(b.mass), toBullet(b.principal), parent_link, rot_parent_to_this, axis,
+                           parent_com_to_pivot, pivot_to_com, true);
+
+    SimJoint sim;
+    sim.name = joint.name;
+    sim.link = i - 1;
+    sim.prismatic = joint.type == urdf::Joint::PRISMATIC;
+    if (joint.limits)
+    {
+      sim.limited = joint.type != urdf::Joint::CONTINUOUS && joint.limits->upper > joint.limits->lower;
+      sim.lower = joint.limits->lower;
+      sim.upper = joint.limits->upper;
+      sim.max_effort = joint.limits->effort;
+      sim.max_velocity = joint.limits->velocity;
+    }
+    joints_.push_back(sim);
+  }
+  body_->finalizeMultiDof();
+  body_->setLinearDamping(0);
+  body_->setAngularDamping(0);
+  body_->setHasSelfCollision(false);
+  body_->setCanSleep(false);
+
+  for (int i = 0; i <= n_links; ++i)
+  {
+    const MergedBody& b = bodies[i];
+    const Eigen::Isometry3d frame_T_root = b.root_T_frame.inverse();
+    for (const auto& link : b.links)
+      links_[link.first] = { i - 1, frame_T_root * link.second };
+    auto compound = std::make_unique<btCompoundShape>(true, int(b.parts.size()));
+    for (const CollisionPart& part : b.parts)
+    {
+      shapes_.push_back(makeShape(*part.geometry, part.link));
+      compound->addChildShape(toBullet(frame_T_root * part.pose), shapes_.back().get());
+    }
+    if (b.parts.empty())
+      compound->addChildShape(btTransform::getIdentity(), (shapes_.emplace_back(new btSphereShape(btScalar(0.001)))).get());
+    auto collider = std::make_unique<btMultiBodyLinkCollider>(body_.get(), i - 1);
+    collider->setCollisionShape(compound.get());
+    collider->setFriction(btScalar(material.friction));
+    collider->setRestitution(btScalar(material.restitution));
+    collider->setUserIndex(b.parts.empty() ? 0 : 1);
+    shapes_.push_back(std::move(compound));
+    if (i == 0)
+      body_->setBaseCollider(collider.get());
+    else
+      body_->getLink(i - 1).m_collider = collider.get();
+    colliders_.push_back(std::move(collider));
+  }
+
+  coupling_of_joint_.assign(joints_.size(), -1);
+  for (SimJoint& sim : joints_)
+  {
+    const urdf::JointConstSharedPtr joint = model.getJoint(sim.name);
+    if (sim.limited)
+      limits_.push_back(std::make_unique<btMultiBodyJointLimitConstraint>(body_.get(), sim.link, btScalar(sim.lower),
+                                                                          btScalar(sim.upper)));
+    if (joint->mimic)
+    {
+      const int master = jointIndex(joint->mimic->joint_name);
+      if (master < 0)
+        throw std::runtime_error("joint " + sim.name + ": mimics '" + joint->mimic->joint_name +
+                                 "', not a movable joint of robot " + name);
+      auto coupling = std::make_unique<JointCoupling>(body_.get(), sim.link, joints_[master].link,
+                                                      joint->mimic->multiplier, joint->mimic->offset);
+      coupling->setGains(1e7, 1e4);
+      sim.mimic = master;
+      sim.multiplier = joint->mimic->multiplier;
+      sim.offset = joint->mimic->offset;
+      coupling_of_joint_[&sim - joints_.data()] = int(couplings_.size());
+      couplings_.push_back(std::move(coupling));
+      continue;
+    }
+    sim.drive = int(drives_.size());
+    drives_.push_back(std::make_unique<JointDrive>(body_.get(), sim.link));
+    if (sim.max_effort > 0.0)
+      drives_.back()->setForceLimit(sim.max_effort);
+  }
+  feed_forward_.assign(joints_.size(), 0.0);
+  setState(std::vector<double>(joints_.size(), 0.0), std::vector<double>(joints_.size(), 0.0));
+}
+
+ArticulatedRobot::~ArticulatedRobot()
+{
+  if (!world_)
+    return;
+  for (auto& c : couplings_)
+    world_->removeMultiBodyConstraint(c.get());
+  for (auto& d : drives_)
+    world_->removeMultiBodyConstraint(d.get());
+  for (auto& l : limits_)
+    world_->removeMultiBodyConstraint(l.get());
+  for (auto& c : colliders_)
+    world_->removeCollisionObject(c.get());
+  world_->removeMultiBody(body_.get());
+}
+
+void ArticulatedRobot::addToWorld(btMultiBodyDynamicsWorld* world)
+{
+  world_ = world;
+  world->addMultiBody(body_.get());
+  for (auto& c : colliders_)
+  {
+    const bool solid = c->getUserIndex() == 1;
+    const bool base = c->m_link < 0;
+    const int group = base ? int(btBroadphaseProxy::StaticFilter) : int(btBroadphaseProxy::DefaultFilter);
+    const int mask = solid ? (base ? int(btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter)
+                                   : int(btBroadphaseProxy::AllFilter))
+                           : 0;
+    world->addCollisionObject(c.get(), solid ? group : 0, mask);
+  }
+  for (auto& l : limits_)
+    world->addMultiBodyConstraint(l.get());
+  for (auto& c : couplings_)
+    world->addMultiBodyConstraint(c.get());
+  for (auto& d : drives_)
+    world->addMultiBodyConstraint(d.get());
+}
+
+int ArticulatedRobot::jointIndex(const std::string& joint) const
+{
+  for (std::size_t i = 0; i < joints_.size(); ++i)
+    if (joints_[i].name == joint)
+      return int(i);
+  return -1;
+}
+
+std::vector<double> ArticulatedRobot::positions() const
+{
+  std::vector<double> q;
+  q.reserve(joints_.size());
+  for (const SimJoint& j : joints_)
+    q.push_back(body_->getJointPos(j.link));
+  return q;
+}
+
+std::vector<double> ArticulatedRobot::velocities() const
+{
+  std::vector<double> v;
+  v.reserve(joints_.size());
+  for (const SimJoint& j : joints_)
+    v.push_back(body_->getJointVel(j.link));
+  return v;
+}
+
+std::vector<double> ArticulatedRobot::efforts(double dt) const
+{
+  std::vector<double> e(joints_.size(), 0.0);
+  for (std::size_t i = 0; i < joints_.size(); ++i)
+  {
+    if (joints_[i].drive >= 0)
+      e[i] = drives_[joints_[i].drive]->getAppliedImpulse(0) / dt;
+    else if (coupling_of_joint_[i] >= 0)
+      e[i] = couplings_[coupling_of_joint_[i]]->getAppliedImpulse(0) / dt;
+    e[i] += feed_forward_[i];
+  }
+  return e;
+}
+
+std::vector<double> ArticulatedRobot::withMimics(std::vector<double> positions) const
+{
+  for (std::size_t i = 0; i < joints_.size(); ++i)
+    if (joints_[i].mimic >= 0)
+      positions[i] = joints_[i].multiplier * positions[std::size_t(joints_[i].mimic)] + joints_[i].offset;
+  return positions;
+}
+
+void ArticulatedRobot::setState(const std::vector<double>& positions, const std::vector<double>& velocities)
+{
+  for (std::size_t i = 0; i < joints_.size(); ++i)
+  {
+    body_->setJointPos(joints_[i].link, btScalar(positions[i]));
+    body_->setJointVel(joints_[i].link, btScalar(velocities[i]));
+  }
+  btAlignedObjectArray<btQuaternion> rotations;
+  btAlignedObjectArray<btVector3> origins;
+  body_->forwardKinematics(rotations, origins);
+  body_->updateCollisionObjectWorldTransforms(rotations, origins);
+}
+
+Eigen::Isometry3d ArticulatedRobot::bodyPose(int body) const
+{
+  const btTransform& t = colliders_[std::size_t(body + 1)]->getWorldTransform();
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translate(toEigen(t.getOrigin()));
+  pose.rotate(toEigen(t.getRotation()));
+  return pose;
+}
+
+const ArticulatedRobot::LinkFrame& ArticulatedRobot::linkFrame(const std::string& link) const
+{
+  const auto it = links_.find(link);
+  if (it == links_.end())
+    throw std::runtime_error("robot " + name_ + ": unknown link '" + link + "'");
+  return it->second;
+}
+
+Eigen::Isometry3d ArticulatedRobot::linkPose(const std::string& link) const
+{
+  const LinkFrame& frame = linkFrame(link);
+  return bodyPose(frame.body) * frame.body_T_link;
+}
+
+std::pair<Eigen::Vector3d, Eigen::Vector3d> ArticulatedRobot::bodyVelocity(int body) const
+{
+  const int n = body_->getNumLinks();
+  std::vector<btVector3> omega(std::size_t(n + 1)), vel(std::size_t(n + 1));
+  body_->compTreeLinkVelocities(omega.data(), vel.data());
+  const Eigen::Matrix3d r = bodyPose(body).rotation();
+  return { r * toEigen(omega[std::size_t(body + 1)]), r * toEigen(vel[std::size_t(body + 1)]) };
+}
+
+Eigen::Vector3d ArticulatedRobot::pointVelocity(const std::string& link, const Eigen::Vector3d& point) const
+{
+  const LinkFrame& frame = linkFrame(link);
+  const auto velocity = bodyVelocity(frame.body);
+  const Eigen::Vector3d arm = linkPose(link) * point - bodyPose(frame.body).translation();
+  return velocity.second + velocity.first.cross(arm);
+}
+
+Eigen::Vector3d ArticulatedRobot::angularVelocity(const std::string& link) const
+{
+  return bodyVelocity(linkFrame(link).body).first;
+}
+
+void ArticulatedRobot::applyWrench(const std::string& link, const Eigen::Vector3d& point, const Eigen::Vector3d& force,
+                                   const Eigen::Vector3d& torque)
+{
+  const LinkFrame& frame = linkFrame(link);
+  if (frame.body < 0)
+    return;
+  const Eigen::Vector3d arm = linkPose(link) * point - bodyPose(frame.body).translation();
+  body_->addLinkForce(frame.body, toBullet(force));
+  body_->addLinkTorque(frame.body, toBullet(Eigen::Vector3d(arm.cross(force) + torque)));
+}
+
+void ArticulatedRobot::clearFeedForward()
+{
+  std::fill(feed_forward_.begin(), feed_forward_.end(), 0.0);
+}
+
+void ArticulatedRobot::compensateGravity(const Eigen::Vector3d& gravity)
+{
+  const int n = body_->getNumLinks();
+  std::vector<double> mass(n);
+  std::vector<Eigen::Vector3d> moment(n);
+  for (int k = 0; k < n; ++k)
+  {
+    mass[k] = body_->getLinkMass(k);
+    moment[k] = mass[k] * bodyPose(k).translation();
+  }
+  for (int k = n - 1; k >= 0; --k)
+  {
+    const int parent = body_->getParent(k);
+    if (parent >= 0)
+    {
+      mass[parent] += mass[k];
+      moment[parent] += moment[k];
+    }
+  }
+  for (std::size_t i = 0; i < joints_.size(); ++i)
+  {
+    const int k = joints_[i].link;
+    const btMultibodyLink& link = body_->getLink(k);
+    const Eigen::Isometry3d frame = bodyPose(k);
+    double generalized;
+    if (joints_[i].prismatic)
+      generalized = (frame.rotation() * toEigen(link.getAxisBottom(0))).dot(mass[k] * gravity);
+    else
+    {
+      const Eigen::Vector3d axis = frame.rotation() * toEigen(link.getAxisTop(0));
+      const Eigen::Vector3d pivot = frame * (-toEigen(link.m_dVector));
+      generalized = axis.cross(moment[k] - mass[k] * pivot).dot(gravity);
+    }
+    feed_forward_[i] = -generalized;
+    body_->addJointTorque(k, btScalar(-generalized));
+  }
+}
+}  // namespace vrrw_physics
