@@ -83,28 +83,35 @@ class Bringup(unittest.TestCase):
                 owners[link] = name
         self.assertEqual(sorted(owners), sorted(link for link in self.links if link != 'world'))
 
+    def published_facts(self, robot):
+        """The expected facts of a robot's model and of its gripper (Fetch's is part of its model)."""
+        parts = [self.expected['robots'][robot['model']]]
+        if robot['gripper'] in self.expected['grippers']:
+            parts.append(self.expected['grippers'][robot['gripper']])
+        return parts
+
     def test_joint_counts_and_limits_match_the_published_values(self):
+        tolerance = self.expected['tolerance']['limit']
         for name, robot in self.robots.items():
-            for part in (robot['model'], robot['gripper']):
-                facts = self.expected.get(part)
-                if not facts:
-                    continue
+            parts = self.published_facts(robot)
+            for facts in parts:
                 for joint_name, limits in facts['joints'].items():
                     joint = self.joints.get(f'{name}_{joint_name}')
                     self.assertIsNotNone(joint, f'{name}: joint {joint_name} missing')
+                    self.assertEqual(joint.get('type'), limits['type'], f'{name}_{joint_name} type')
                     limit = joint.find('limit')
                     for key in ('lower', 'upper', 'velocity', 'effort'):
                         if key in limits:
-                            self.assertAlmostEqual(float(limit.get(key)), limits[key], delta=1e-4,
+                            self.assertAlmostEqual(float(limit.get(key)), limits[key], delta=tolerance,
                                                    msg=f'{name}_{joint_name} {key}')
+                for joint_name, mimic in facts.get('mimic', {}).items():
+                    element = self.joints[f'{name}_{joint_name}'].find('mimic')
+                    self.assertEqual(element.get('joint'), f"{name}_{mimic['joint']}")
+                    self.assertAlmostEqual(float(element.get('multiplier', 1)), mimic['multiplier'])
             movable = [j for j in self.robot_joints(name) if j.get('type') != 'fixed' and j.find('mimic') is None]
             mimic = [j for j in self.robot_joints(name) if j.find('mimic') is not None]
-            expected_movable = sum(self.expected.get(p, {}).get('movable_joints', 0)
-                                   for p in (robot['model'], robot['gripper']))
-            expected_mimic = sum(self.expected.get(p, {}).get('mimic_joints', 0)
-                                 for p in (robot['model'], robot['gripper']))
-            self.assertEqual(len(movable), expected_movable, f'{name}: movable joints')
-            self.assertEqual(len(mimic), expected_mimic, f'{name}: mimic joints')
+            self.assertEqual(len(movable), sum(p['counts']['movable'] for p in parts), f'{name}: movable joints')
+            self.assertEqual(len(mimic), sum(p['counts']['mimic'] for p in parts), f'{name}: mimic joints')
 
     def test_mimic_joints_follow_their_leader(self):
         states = {}
