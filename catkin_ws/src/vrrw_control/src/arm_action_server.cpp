@@ -1,0 +1,184 @@
+#include <vrrw_control/arm_action_server.h>
+#include <vrrw_control/msg_conversions.h>
+
+namespace vrrw_control
+{
+namespace
+{
+using Result = control_msgs::FollowJointTrajectoryResult;
+
+int codeOf(Validation::Error e)
+{
+  return e == Validation::Error::InvalidJoints ? Result::INVALID_JOINTS : Result::INVALID_GOAL;
+}
+}  // namespace
+
+ArmActionServer::ArmActionServer(ros::NodeHandle& nh, ArmController& arm, const RobotHardware& hardware,
+                                 Options options, std::unique_ptr<RealDriverRelay> relay)
+  : arm_(arm)
+  , hw_(hardware)
+  , options_(std::move(options))
+  , origin_(options_.clock_origin)
+  , relay_(std::move(relay))
+  , server_(nh, "arm_controller/follow_joint_trajectory", [this](GoalHandle gh) { onGoal(gh); },
+            [this](GoalHandle gh) { onCancel(gh); }, false)
+  , name_(nh.getNamespace() + "/arm_controller")
+{
+  if (relay_)
+    confirm_ = nh.advertiseService("arm_controller/confirm_real_execution", &ArmActionServer::onConfirm, this);
+  server_.start();
+}
+
+void ArmActionServer::reject(GoalHandle& gh, int code, const std::string& message)
+{
+  Result r;
+  r.error_code = code;
+  r.error_string = message;
+  gh.setRejected(r, message);
+  ROS_WARN_STREAM(name_ << ": goal rejected: " << message);
+}
+
+void ArmActionServer::finish(int code, const std::string& message)
+{
+  Result r;
+  r.error_code = code;
+  r.error_string = message;
+  if (code == Result::SUCCESSFUL)
+    active_.setSucceeded(r, message);
+  else
+  {
+    active_.setAborted(r, message);
+    ROS_WARN_STREAM(name_ << ": goal aborted: " << message);
+  }
+  phase_ = Phase::Idle;
+}
+
+void ArmActionServer::onGoal(GoalHandle gh)
+{
+  const auto goal = gh.getGoal();
+  const ros::Time now = ros::Time::now();
+  if (!hw_.ready())
+    return reject(gh, Result::INVALID_GOAL, "no joint_states received for this robot yet");
+  Tolerances tolerances = options_.defaults;
+  const std::string bad = applyTolerances(goal->path_tolerance, goal->goal_tolerance,
+                                          goal->goal_time_tolerance.toSec(), arm_.joints(), tolerances);
+  if (!bad.empty())
+    return reject(gh, Result::INVALID_GOAL, bad);
+  ros::Time start = goal->trajectory.header.stamp.isZero() ? now : goal->trajectory.header.stamp;
+  if (!goal->trajectory.points.empty() && start + goal->trajectory.points.back().time_from_start < now)
+    return reject(gh, Result::OLD_HEADER_TIMESTAMP,
+                  "trajectory ended " + std::to_string((now - start).toSec()) + " s ago (header.stamp in the past)");
+  start = std::max(start, now);
+  const Validation v = arm_.validate(fromMsg(goal->trajectory), toTime(now));
+  if (!v.ok())
+    return reject(gh, codeOf(v.error), v.message);
+
+  if (phase_ != Phase::Idle)
+  {
+    if (phase_ == Phase::Relaying)
+      relay_->cancel();
+    Result r;
+    r.error_string = "preempted by a newer goal";
+    active_.setCanceled(r, r.error_string);
+  }
+  gh.setAccepted();
+  arm_.start(v, toTime(start), toTime(now), tolerances);
+  active_ = gh;
+  phase_ = Phase::Simulating;
+}
+
+void ArmActionServer::onCancel(GoalHandle gh)
+{
+  if (phase_ == Phase::Idle || !(gh == active_))
+    return;
+  if (phase_ == Phase::Simulating)
+    arm_.stop(toTime(ros::Time::now()));
+  if (phase_ == Phase::Relaying)
+    relay_->cancel();
+  Result r;
+  r.error_string = phase_ == Phase::Relaying ? "canceled; cancel forwarded to the real driver" : "canceled";
+  active_.setCanceled(r, r.error_string);
+  phase_ = Phase::Idle;
+}
+
+bool ArmActionServer::onConfirm(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res)
+{
+  if (phase_ != Phase::AwaitingConfirmation)
+  {
+    res.success = false;
+    res.message = phase_ == Phase::Simulating ? "the goal is still running in simulation" :
+                  phase_ == Phase::Relaying   ? "the goal was already relayed" :
+                                                "no goal awaits confirmation";
+    return true;
+  }
+  const std::string id = active_.getGoalID().id;
+  const auto done = [this, id](const actionlib::SimpleClientGoalState& state, const Result& result) {
+    if (phase_ != Phase::Relaying || active_.getGoalID().id != id)
+      return;
+    if (state == actionlib::SimpleClientGoalState::SUCCEEDED)
+      active_.setSucceeded(result, result.error_string);
+    else
+      active_.setAborted(result, "real driver: " + state.toString() + " " + result.error_string);
+    phase_ = Phase::Idle;
+  };
+  const auto feedback = [this, id](const control_msgs::FollowJointTrajectoryFeedback& f) {
+    if (phase_ != Phase::Relaying || active_.getGoalID().id != id)
+      return;
+    auto out = f;
+    for (auto& n : out.joint_names)
+      n = relay_->prefixed(n);
+    active_.publishFeedback(out);
+  };
+  if (!relay_->send(*active_.getGoal(), done, feedback))
+  {
+    res.success = false;
+    res.message = "real driver action " + relay_->action() + " is not connected; nothing was sent";
+    return true;
+  }
+  phase_ = Phase::Relaying;
+  res.success = true;
+  res.message = "goal " + id + " relayed to " + relay_->action();
+  ROS_INFO_STREAM(name_ << ": " << res.message);
+  return true;
+}
+
+void ArmActionServer::publishFeedback(const ros::Time& now, const ArmController::Cycle& cycle)
+{
+  control_msgs::FollowJointTrajectoryFeedback f;
+  f.header.stamp = now;
+  f.joint_names = arm_.joints();
+  f.desired = toPointMsg(cycle.desired);
+  f.actual = toPointMsg(cycle.actual);
+  f.error = toPointMsg(cycle.error);
+  active_.publishFeedback(f);
+}
+
+void ArmActionServer::update(const ros::Time& now)
+{
+  const ArmController::Cycle c = arm_.update(toTime(now));
+  if (phase_ == Phase::Simulating)
+  {
+    publishFeedback(now, c);
+    switch (c.outcome)
+    {
+      case ArmController::Outcome::None:
+        break;
+      case ArmController::Outcome::Succeeded:
+        if (!relay_)
+          return finish(Result::SUCCESSFUL, "");
+        phase_ = Phase::AwaitingConfirmation;
+        confirm_deadline_ = now + ros::Duration(options_.confirm_timeout);
+        ROS_INFO_STREAM(name_ << ": goal ran in simulation; call " << confirm_.getService()
+                              << " to send it to " << relay_->action());
+        break;
+      case ArmController::Outcome::PathToleranceViolated:
+        return finish(Result::PATH_TOLERANCE_VIOLATED, c.message);
+      case ArmController::Outcome::GoalToleranceViolated:
+        return finish(Result::GOAL_TOLERANCE_VIOLATED, c.message);
+    }
+  }
+  else if (phase_ == Phase::AwaitingConfirmation && now > confirm_deadline_)
+    finish(Result::INVALID_GOAL, "no confirmation within " + std::to_string(options_.confirm_timeout) +
+                                     " s; nothing was sent to the real robot");
+}
+}  // namespace vrrw_control

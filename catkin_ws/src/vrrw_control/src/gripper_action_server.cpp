@@ -1,0 +1,67 @@
+#include <vrrw_control/gripper_action_server.h>
+
+namespace vrrw_control
+{
+GripperActionServer::GripperActionServer(ros::NodeHandle& nh, GripperController& gripper,
+                                         const ros::Time& clock_origin, bool allow_stalling)
+  : gripper_(gripper)
+  , origin_(clock_origin)
+  , allow_stalling_(allow_stalling)
+  , server_(nh, "gripper_controller/gripper_cmd", [this](GoalHandle gh) { onGoal(gh); },
+            [this](GoalHandle gh) { onCancel(gh); }, false)
+{
+  server_.start();
+}
+
+void GripperActionServer::onGoal(GoalHandle gh)
+{
+  const auto goal = gh.getGoal();
+  const std::string bad = gripper_.check(goal->command.position);
+  if (!bad.empty())
+  {
+    gh.setRejected(control_msgs::GripperCommandResult(), bad);
+    ROS_WARN_STREAM(ros::this_node::getNamespace() << "/gripper_controller: goal rejected: " << bad);
+    return;
+  }
+  if (has_active_)
+    active_.setCanceled(control_msgs::GripperCommandResult(), "preempted by a newer goal");
+  gh.setAccepted();
+  gripper_.start(goal->command.position, toTime(ros::Time::now()));
+  active_ = gh;
+  has_active_ = true;
+}
+
+void GripperActionServer::onCancel(GoalHandle gh)
+{
+  if (!has_active_ || !(gh == active_))
+    return;
+  gripper_.stop(toTime(ros::Time::now()));
+  active_.setCanceled(control_msgs::GripperCommandResult(), "canceled");
+  has_active_ = false;
+}
+
+void GripperActionServer::update(const ros::Time& now)
+{
+  const auto c = gripper_.update(toTime(now));
+  if (!has_active_)
+    return;
+  control_msgs::GripperCommandFeedback f;
+  f.position = c.position;
+  f.effort = c.effort;
+  f.stalled = c.stalled;
+  f.reached_goal = c.reached_goal;
+  active_.publishFeedback(f);
+  if (!c.done)
+    return;
+  control_msgs::GripperCommandResult r;
+  r.position = c.position;
+  r.effort = c.effort;
+  r.stalled = c.stalled;
+  r.reached_goal = c.reached_goal;
+  if (c.reached_goal || (c.stalled && allow_stalling_))
+    active_.setSucceeded(r, c.stalled ? "stalled (fingers closed on an object)" : "");
+  else
+    active_.setAborted(r, c.stalled ? "stalled short of the goal" : "goal not reached in time");
+  has_active_ = false;
+}
+}  // namespace vrrw_control

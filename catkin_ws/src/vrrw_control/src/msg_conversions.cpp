@@ -1,0 +1,72 @@
+#include <algorithm>
+#include <vrrw_control/msg_conversions.h>
+
+namespace vrrw_control
+{
+vrrw_trajectory::JointTrajectory fromMsg(const trajectory_msgs::JointTrajectory& msg)
+{
+  vrrw_trajectory::JointTrajectory t;
+  t.joint_names = msg.joint_names;
+  for (const auto& p : msg.points)
+  {
+    vrrw_trajectory::TrajectoryPoint q;
+    q.time = p.time_from_start.toSec();
+    q.positions = p.positions;
+    q.velocities = p.velocities;
+    q.accelerations = p.accelerations;
+    t.points.push_back(std::move(q));
+  }
+  return t;
+}
+
+trajectory_msgs::JointTrajectoryPoint toPointMsg(const JointSample& sample, double time_from_start)
+{
+  trajectory_msgs::JointTrajectoryPoint p;
+  p.positions = sample.positions;
+  p.velocities = sample.velocities;
+  p.accelerations = sample.accelerations;
+  p.time_from_start = ros::Duration(time_from_start);
+  return p;
+}
+
+namespace
+{
+double merge(double requested, double fallback)
+{
+  if (requested < 0.0)
+    return 0.0;
+  return requested > 0.0 ? requested : fallback;
+}
+
+bool apply(const std::vector<control_msgs::JointTolerance>& given, const std::vector<std::string>& joints,
+           std::vector<double>& position, std::vector<double>& velocity, std::string& error, const char* kind)
+{
+  for (const auto& t : given)
+  {
+    const auto it = std::find(joints.begin(), joints.end(), t.name);
+    if (it == joints.end())
+    {
+      error = std::string(kind) + " tolerance names joint " + t.name + ", not a joint of this controller";
+      return false;
+    }
+    const size_t j = static_cast<size_t>(it - joints.begin());
+    position[j] = merge(t.position, position[j]);
+    velocity[j] = merge(t.velocity, velocity[j]);
+  }
+  return true;
+}
+}  // namespace
+
+std::string applyTolerances(const std::vector<control_msgs::JointTolerance>& path,
+                            const std::vector<control_msgs::JointTolerance>& goal, double goal_time,
+                            const std::vector<std::string>& joints, Tolerances& tol)
+{
+  std::string error;
+  if (!apply(path, joints, tol.path_position, tol.path_velocity, error, "path") ||
+      !apply(goal, joints, tol.goal_position, tol.goal_velocity, error, "goal"))
+    return error;
+  if (goal_time > 0.0)
+    tol.goal_time = goal_time;
+  return "";
+}
+}  // namespace vrrw_control
