@@ -1,0 +1,254 @@
+// Node test (rostest, real master): controller_node in fake mode for two robots.
+#include <actionlib/client/simple_action_client.h>
+#include <cmath>
+#include <control_msgs/GripperCommandAction.h>
+#include <gtest/gtest.h>
+#include <limits>
+#include "ros_test_helpers.h"
+#include <vrrw_control/msg_conversions.h>
+#include <vrrw_control/trajectory_interpolator.h>
+
+using namespace vrrw_control_test;
+using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;
+using GripperClient = actionlib::SimpleActionClient<control_msgs::GripperCommandAction>;
+using Result = control_msgs::FollowJointTrajectoryResult;
+using State = actionlib::SimpleClientGoalState;
+
+namespace
+{
+const double kVelocityLimit = 3.14159, kAccelerationLimit = 8.0;  // fixture URDF, fixture YAML
+
+struct Robot
+{
+  Robot(ros::NodeHandle& nh, const std::string& name)
+    : prefix(name + "_")
+    , arm("/" + name + "/arm_controller/follow_joint_trajectory", false)
+    , gripper("/" + name + "/gripper_controller/gripper_cmd", false)
+    , states(nh, "/" + name + "/joint_states")
+  {
+    EXPECT_TRUE(arm.waitForServer(ros::Duration(15.0)));
+    EXPECT_TRUE(gripper.waitForServer(ros::Duration(15.0)));
+  }
+  std::vector<double> arm_positions()
+  {
+    sensor_msgs::JointState s;
+    EXPECT_TRUE(states.waitLatest(s));
+    return std::vector<double>(s.position.begin(), s.position.begin() + 6);
+  }
+  std::string prefix;
+  ArmClient arm;
+  GripperClient gripper;
+  JointStateLog states;
+};
+
+Robot* ur5e = nullptr;
+Robot* ur3e = nullptr;
+
+std::vector<double> armOf(const sensor_msgs::JointState& s) { return { s.position.begin(), s.position.begin() + 6 }; }
+}  // namespace
+
+TEST(FakeMode, ReproducesTheInterpolantAtEveryPublishedSample)
+{
+  const auto q0 = ur5e->arm_positions();
+  control_msgs::FollowJointTrajectoryGoal g;
+  g.trajectory.joint_names = armJoints("ur5e_");
+  std::vector<double> q1(q0), q2(q0), v1(6), a1(6), zero(6, 0.0);
+  for (size_t j = 0; j < 6; ++j)
+  {
+    q1[j] += 0.3 + 0.05 * j;
+    q2[j] -= 0.2 * (j % 2 ? 1.0 : -1.0);
+    v1[j] = 0.2 - 0.08 * j;
+    a1[j] = 0.5 - 0.2 * j;
+  }
+  g.trajectory.points = { point(0.0, q0, zero, zero), point(0.8, q1, v1, a1), point(1.7, q2, zero, zero) };
+  const ros::Time start = ros::Time::now() + ros::Duration(0.3);
+  g.trajectory.header.stamp = start;
+  int feedback = 0;
+  ur5e->arm.sendGoal(g, ArmClient::SimpleDoneCallback(), ArmClient::SimpleActiveCallback(),
+                     [&](const control_msgs::FollowJointTrajectoryFeedbackConstPtr&) { ++feedback; });
+  ASSERT_TRUE(ur5e->arm.waitForResult(ros::Duration(10.0)));
+  EXPECT_EQ(ur5e->arm.getState(), State::SUCCEEDED);
+  EXPECT_EQ(ur5e->arm.getResult()->error_code, Result::SUCCESSFUL);
+  ros::Duration(0.1).sleep();
+
+  const vrrw_control::TrajectoryInterpolator reference(vrrw_control::fromMsg(g.trajectory));
+  const auto run = ur5e->states.since(start - ros::Duration(0.1));
+  double max_error = 0.0;
+  size_t during = 0;
+  for (const auto& s : run)
+  {
+    const double t = (s.header.stamp - start).toSec();
+    const auto expected = reference.sample(t);
+    during += t >= 0.0 && t <= 1.7;
+    for (size_t j = 0; j < 6; ++j)
+      max_error = std::max(max_error, std::abs(s.position[j] - expected.positions[j]));
+  }
+  RecordProperty("max_error_rad", std::to_string(max_error));
+  RecordProperty("samples", std::to_string(during));
+  std::cout << "fake reproduction: " << during << " samples in the 1.7 s motion, max |q - interpolant| = " << max_error
+            << " rad, feedback messages " << feedback << std::endl;
+  EXPECT_LT(max_error, 1e-9);
+  EXPECT_GE(during, 150u);       // 100 Hz over 1.7 s
+  EXPECT_GE(feedback, 150);      // feedback at the control rate
+}
+
+TEST(FakeMode, EveryValidationRuleRejectsAndLeavesTheRobotWhereItWas)
+{
+  const auto q0 = ur5e->arm_positions();
+  const auto good = move("ur5e_", q0, { 0.2, 0.2, 0.2, 0.2, 0.2, 0.2 }, 1.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  struct Case
+  {
+    std::string rule;
+    std::function<void(control_msgs::FollowJointTrajectoryGoal&)> spoil;
+    int code;
+    std::string expect;
+  };
+  const std::vector<Case> cases = {
+    { "duplicate joint", [](auto& g) { g.trajectory.joint_names[1] = "ur5e_shoulder_pan_joint"; },
+      Result::INVALID_JOINTS, "joint ur5e_shoulder_pan_joint: named twice" },
+    { "foreign joint", [](auto& g) { g.trajectory.joint_names[2] = "ur3e_elbow_joint"; }, Result::INVALID_JOINTS,
+      "joint ur3e_elbow_joint: not a joint of this controller" },
+    { "missing joint",
+      [](auto& g) {
+        g.trajectory.joint_names.pop_back();
+        for (auto& p : g.trajectory.points)
+          p.positions.pop_back(), p.velocities.pop_back();
+      },
+      Result::INVALID_JOINTS, "joint ur5e_wrist_3_joint: missing" },
+    { "time not increasing", [](auto& g) { g.trajectory.points[1].time_from_start = ros::Duration(0.0); },
+      Result::INVALID_GOAL, "point 1: time_from_start 0 s does not increase" },
+    { "not finite", [&](auto& g) { g.trajectory.points[1].positions[3] = nan; }, Result::INVALID_GOAL,
+      "point 1: joint ur5e_wrist_1_joint: value is not finite" },
+    { "position limit", [](auto& g) { g.trajectory.points[1].positions[2] = 3.5; }, Result::INVALID_GOAL,
+      "point 1: joint ur5e_elbow_joint: position 3.5 outside limits" },
+    { "velocity limit", [](auto& g) { g.trajectory.points[1].velocities[4] = 4.0; }, Result::INVALID_GOAL,
+      "point 1: joint ur5e_wrist_2_joint: velocity 4 exceeds limit 3.14159" },
+    { "acceleration limit",
+      [](auto& g) {
+        for (auto& p : g.trajectory.points)
+          p.accelerations.assign(6, 0.0);
+        g.trajectory.points[1].accelerations[0] = 9.0;
+      },
+      Result::INVALID_GOAL, "point 1: joint ur5e_shoulder_pan_joint: acceleration 9 exceeds limit 8" },
+    { "interpolated velocity", [](auto& g) { g.trajectory.points[1].time_from_start = ros::Duration(0.05); },
+      Result::INVALID_GOAL, "point 1: joint ur5e_shoulder_pan_joint: interpolated velocity" },
+    { "start tolerance", [](auto& g) { g.trajectory.points[0].positions[5] += 0.5; }, Result::INVALID_GOAL,
+      "point 0: joint ur5e_wrist_3_joint: starts 0.5 from the current position" },
+    { "old header", [](auto& g) { g.trajectory.header.stamp = ros::Time::now() - ros::Duration(5.0); },
+      Result::OLD_HEADER_TIMESTAMP, "in the past" },
+  };
+  for (const auto& c : cases)
+  {
+    auto g = good;
+    c.spoil(g);
+    sensor_msgs::JointState before;
+    ASSERT_TRUE(ur5e->states.waitLatest(before));
+    ur5e->arm.sendGoal(g);
+    ASSERT_TRUE(ur5e->arm.waitForResult(ros::Duration(5.0))) << c.rule;
+    EXPECT_EQ(ur5e->arm.getState(), State::REJECTED) << c.rule;
+    EXPECT_EQ(ur5e->arm.getResult()->error_code, c.code) << c.rule;
+    EXPECT_NE(ur5e->arm.getResult()->error_string.find(c.expect), std::string::npos)
+        << c.rule << ": " << ur5e->arm.getResult()->error_string;
+    ros::Duration(0.1).sleep();
+    sensor_msgs::JointState after;
+    ASSERT_TRUE(ur5e->states.waitLatest(after));
+    EXPECT_GT(after.header.stamp, before.header.stamp);
+    EXPECT_EQ(after.position, before.position) << c.rule << ": the robot moved";
+  }
+}
+
+TEST(FakeMode, CancelStopsSmoothly)
+{
+  const auto q0 = ur5e->arm_positions();
+  ur5e->arm.sendGoal(move("ur5e_", q0, { 1.5, -1.0, 0.5, 0.0, 0.0, 1.5 }, 2.5));
+  const ros::Time start = ros::Time::now();
+  ros::Duration(1.2).sleep();  // near peak velocity 0.9 rad/s
+  ur5e->arm.cancelGoal();
+  ASSERT_TRUE(ur5e->arm.waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(ur5e->arm.getState(), State::PREEMPTED);
+  ros::Duration(0.6).sleep();
+  const auto run = ur5e->states.since(start);
+  double vmax, amax;
+  finiteDifferences(run, vmax, amax);
+  std::cout << "cancel: max |qd| " << vmax << " rad/s, max |qdd| " << amax << " rad/s^2" << std::endl;
+  EXPECT_LE(vmax, 1.5 * 1.5 / 2.5 + 1e-6);  // never faster than the trajectory's own peak
+  EXPECT_LE(amax, kAccelerationLimit * 1.05);
+  const auto last = armOf(run.back()), before_last = armOf(run[run.size() - 5]);
+  EXPECT_EQ(last, before_last) << "still moving after the stop";
+  EXPECT_LT(last[0], q0[0] + 1.5 - 0.1) << "the stop did not end early";
+}
+
+TEST(FakeMode, PreemptionBlendsWithoutSteps)
+{
+  const auto q0 = ur3e->arm_positions();
+  ur3e->arm.sendGoal(move("ur3e_", q0, { 1.0, 1.0, -1.0, 0.5, 0.5, 0.5 }, 2.0));
+  const ros::Time start = ros::Time::now();
+  ros::Duration(1.0).sleep();
+  auto back = move("ur3e_", q0, { 0, 0, 0, 0, 0, 0 }, 0.5);  // back to q0: far from the state, blended
+  ArmClient second("/ur3e/arm_controller/follow_joint_trajectory", true);
+  ASSERT_TRUE(second.waitForServer(ros::Duration(5.0)));
+  second.sendGoal(back);
+  ASSERT_TRUE(second.waitForResult(ros::Duration(15.0)));
+  EXPECT_EQ(second.getState(), State::SUCCEEDED) << second.getResult()->error_string;
+  ASSERT_TRUE(ur3e->arm.waitForResult(ros::Duration(1.0)));
+  EXPECT_EQ(ur3e->arm.getState(), State::PREEMPTED);
+  ros::Duration(0.1).sleep();
+  const auto run = ur3e->states.since(start);
+  double vmax, amax;
+  finiteDifferences(run, vmax, amax);
+  std::cout << "preempt: " << run.size() << " samples, max |qd| " << vmax << " rad/s, max |qdd| " << amax
+            << " rad/s^2" << std::endl;
+  EXPECT_LE(vmax, kVelocityLimit);
+  EXPECT_LE(amax, kAccelerationLimit * 1.05);
+  const auto last = armOf(run.back());
+  for (size_t j = 0; j < 6; ++j)
+    EXPECT_NEAR(last[j], q0[j], 1e-9);
+}
+
+TEST(FakeMode, TwoRobotsMoveAtOnceWithoutInterfering)
+{
+  const auto a0 = ur5e->arm_positions(), b0 = ur3e->arm_positions();
+  ur5e->arm.sendGoal(move("ur5e_", a0, { 0.3, 0, 0, 0, 0, 0 }, 1.0));
+  ur3e->arm.sendGoal(move("ur3e_", b0, { 0, 0, 0, 0, 0, -0.4 }, 1.0));
+  ASSERT_TRUE(ur5e->arm.waitForResult(ros::Duration(5.0)));
+  ASSERT_TRUE(ur3e->arm.waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(ur5e->arm.getState(), State::SUCCEEDED);
+  EXPECT_EQ(ur3e->arm.getState(), State::SUCCEEDED);
+  ros::Duration(0.05).sleep();
+  const auto a1 = ur5e->arm_positions(), b1 = ur3e->arm_positions();
+  EXPECT_NEAR(a1[0] - a0[0], 0.3, 1e-12);
+  EXPECT_NEAR(b1[5] - b0[5], -0.4, 1e-12);
+  EXPECT_EQ(a1[5], a0[5]);
+  EXPECT_EQ(b1[0], b0[0]);
+}
+
+TEST(FakeMode, GripperReachesGoalAndRejectsOutOfRange)
+{
+  control_msgs::GripperCommandGoal g;
+  g.command.position = 0.5;
+  g.command.max_effort = 20.0;
+  ur5e->gripper.sendGoal(g);
+  ASSERT_TRUE(ur5e->gripper.waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(ur5e->gripper.getState(), State::SUCCEEDED);
+  EXPECT_TRUE(ur5e->gripper.getResult()->reached_goal);
+  EXPECT_FALSE(ur5e->gripper.getResult()->stalled);
+  EXPECT_NEAR(ur5e->gripper.getResult()->position, 0.5, 0.01);
+  g.command.position = 0.95;
+  ur5e->gripper.sendGoal(g);
+  ASSERT_TRUE(ur5e->gripper.waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(ur5e->gripper.getState(), State::REJECTED);
+}
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_fake_mode");
+  ros::NodeHandle nh;
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  Robot a(nh, "ur5e"), b(nh, "ur3e");
+  ur5e = &a;
+  ur3e = &b;
+  return RUN_ALL_TESTS();
+}
