@@ -1,0 +1,153 @@
+// Node test (rostest, real master): real mode relays a goal to a stand-in driver only after it ran in
+// simulation and a confirmation arrived, byte-identical except for the documented prefix strip.
+#include <actionlib/client/simple_action_client.h>
+#include <actionlib/server/action_server.h>
+#include <gtest/gtest.h>
+#include <std_srvs/Trigger.h>
+#include "ros_test_helpers.h"
+
+using namespace vrrw_control_test;
+using Action = control_msgs::FollowJointTrajectoryAction;
+using ArmClient = actionlib::SimpleActionClient<Action>;
+using State = actionlib::SimpleClientGoalState;
+
+namespace
+{
+/// Plays ur_robot_driver: accepts, reports one feedback with unprefixed names, succeeds.
+class StandInDriver
+{
+public:
+  explicit StandInDriver(ros::NodeHandle& nh)
+    : server_(nh, "/stand_in/scaled_pos_joint_traj_controller/follow_joint_trajectory",
+              [this](actionlib::ServerGoalHandle<Action> gh) { onGoal(gh); }, false)
+  {
+    server_.start();
+  }
+  std::vector<control_msgs::FollowJointTrajectoryGoal> received() const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return goals_;
+  }
+
+private:
+  void onGoal(actionlib::ServerGoalHandle<Action> gh)
+  {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      goals_.push_back(*gh.getGoal());
+    }
+    gh.setAccepted();
+    control_msgs::FollowJointTrajectoryFeedback f;
+    f.joint_names = gh.getGoal()->trajectory.joint_names;
+    gh.publishFeedback(f);
+    control_msgs::FollowJointTrajectoryResult r;
+    r.error_string = "stand-in executed";
+    gh.setSucceeded(r);
+  }
+  mutable std::mutex mutex_;
+  std::vector<control_msgs::FollowJointTrajectoryGoal> goals_;
+  actionlib::ActionServer<Action> server_;
+};
+
+StandInDriver* driver = nullptr;
+ArmClient* arm = nullptr;
+JointStateLog* states = nullptr;
+
+bool confirm(std::string& message)
+{
+  std_srvs::Trigger t;
+  EXPECT_TRUE(ros::service::call("/ur5e/arm_controller/confirm_real_execution", t));
+  message = t.response.message;
+  return t.response.success;
+}
+
+std::vector<uint8_t> bytes(const control_msgs::FollowJointTrajectoryGoal& g)
+{
+  const auto m = ros::serialization::serializeMessage(g);
+  return std::vector<uint8_t>(m.message_start, m.message_start + m.num_bytes - 4);
+}
+
+std::vector<double> armNow()
+{
+  sensor_msgs::JointState s;
+  EXPECT_TRUE(states->waitLatest(s));
+  return { s.position.begin(), s.position.begin() + 6 };
+}
+}  // namespace
+
+TEST(RealMode, RelaysOnlyAfterSimulationAndConfirmationByteIdentical)
+{
+  const auto goal = move("ur5e_", armNow(), { 0.2, -0.1, 0.1, 0.0, 0.3, 0.0 }, 0.8);
+  std::vector<std::string> feedback_names;
+  arm->sendGoal(goal, ArmClient::SimpleDoneCallback(), ArmClient::SimpleActiveCallback(),
+                [&](const control_msgs::FollowJointTrajectoryFeedbackConstPtr& f) { feedback_names = f->joint_names; });
+  ros::Duration(0.2).sleep();
+  std::string message;
+  EXPECT_FALSE(confirm(message));
+  EXPECT_NE(message.find("still running in simulation"), std::string::npos) << message;
+  ros::Duration(1.3).sleep();  // the simulated run is over; waiting for the person
+  EXPECT_EQ(arm->getState(), State::ACTIVE);
+  EXPECT_EQ(driver->received().size(), 0u) << "sent without confirmation";
+  EXPECT_TRUE(confirm(message)) << message;
+  ASSERT_TRUE(arm->waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(arm->getState(), State::SUCCEEDED);
+  EXPECT_EQ(arm->getResult()->error_string, "stand-in executed");
+  const auto received = driver->received();
+  ASSERT_EQ(received.size(), 1u);
+
+  auto expected = goal;  // the validated goal with the documented change: names without "ur5e_"
+  for (auto& n : expected.trajectory.joint_names)
+    n = n.substr(5);
+  EXPECT_EQ(received[0].trajectory.joint_names[0], "shoulder_pan_joint");
+  EXPECT_EQ(bytes(received[0]), bytes(expected));
+  ASSERT_EQ(feedback_names.size(), 6u);
+  EXPECT_EQ(feedback_names[0], "ur5e_shoulder_pan_joint");  // driver feedback comes back prefixed
+}
+
+TEST(RealMode, CancelBeforeConfirmationSendsNothing)
+{
+  const size_t before = driver->received().size();
+  arm->sendGoal(move("ur5e_", armNow(), { -0.2, 0, 0, 0, 0, 0 }, 0.3));
+  ros::Duration(0.8).sleep();
+  EXPECT_EQ(arm->getState(), State::ACTIVE);
+  arm->cancelGoal();
+  ASSERT_TRUE(arm->waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(arm->getState(), State::PREEMPTED);
+  std::string message;
+  EXPECT_FALSE(confirm(message));
+  EXPECT_NE(message.find("no goal awaits confirmation"), std::string::npos) << message;
+  ros::Duration(0.3).sleep();
+  EXPECT_EQ(driver->received().size(), before);
+}
+
+TEST(RealMode, RejectedGoalNeverReachesTheDriver)
+{
+  const size_t before = driver->received().size();
+  auto bad = move("ur5e_", armNow(), { 0, 0, 4.0, 0, 0, 0 }, 3.0);  // elbow beyond pi
+  arm->sendGoal(bad);
+  ASSERT_TRUE(arm->waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(arm->getState(), State::REJECTED);
+  std::string message;
+  EXPECT_FALSE(confirm(message));
+  EXPECT_EQ(driver->received().size(), before);
+}
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_real_mode");
+  ros::NodeHandle nh;
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  StandInDriver d(nh);
+  ArmClient a("/ur5e/arm_controller/follow_joint_trajectory", false);
+  JointStateLog s(nh, "/ur5e/joint_states");
+  driver = &d;
+  arm = &a;
+  states = &s;
+  if (!a.waitForServer(ros::Duration(15.0)) ||
+      !ros::service::waitForService("/ur5e/arm_controller/confirm_real_execution", ros::Duration(15.0)))
+    return 1;
+  ros::Duration(0.5).sleep();  // the controller's relay client connects to the stand-in
+  return RUN_ALL_TESTS();
+}
