@@ -8,7 +8,6 @@
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
-#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include <Eigen/Eigenvalues>
@@ -288,8 +287,7 @@ ArticulatedRobot::ArticulatedRobot(const urdf::ModelInterface& model, const std:
   {
     const urdf::JointConstSharedPtr joint = model.getJoint(sim.name);
     if (sim.limited)
-      limits_.push_back(std::make_unique<btMultiBodyJointLimitConstraint>(body_.get(), sim.link, btScalar(sim.lower),
-                                                                          btScalar(sim.upper)));
+      limits_.push_back(std::make_unique<JointLimit>(body_.get(), sim.link, sim.lower, sim.upper));
     if (joint->mimic)
     {
       const int master = jointIndex(joint->mimic->joint_name);
@@ -321,8 +319,9 @@ ArticulatedRobot::~ArticulatedRobot()
     return;
   for (auto& c : couplings_)
     world_->removeMultiBodyConstraint(c.get());
-  for (auto& d : drives_)
-    world_->removeMultiBodyConstraint(d.get());
+  if (drive_constraints_)
+    for (auto& d : drives_)
+      world_->removeMultiBodyConstraint(d.get());
   for (auto& l : limits_)
     world_->removeMultiBodyConstraint(l.get());
   for (auto& c : colliders_)
@@ -330,9 +329,10 @@ ArticulatedRobot::~ArticulatedRobot()
   world_->removeMultiBody(body_.get());
 }
 
-void ArticulatedRobot::addToWorld(btMultiBodyDynamicsWorld* world)
+void ArticulatedRobot::addToWorld(btMultiBodyDynamicsWorld* world, bool drive_constraints)
 {
   world_ = world;
+  drive_constraints_ = drive_constraints;
   world->addMultiBody(body_.get());
   for (auto& c : colliders_)
   {
@@ -348,8 +348,9 @@ void ArticulatedRobot::addToWorld(btMultiBodyDynamicsWorld* world)
     world->addMultiBodyConstraint(l.get());
   for (auto& c : couplings_)
     world->addMultiBodyConstraint(c.get());
-  for (auto& d : drives_)
-    world->addMultiBodyConstraint(d.get());
+  if (drive_constraints)
+    for (auto& d : drives_)
+      world->addMultiBodyConstraint(d.get());
 }
 
 int ArticulatedRobot::jointIndex(const std::string& joint) const
@@ -383,8 +384,8 @@ std::vector<double> ArticulatedRobot::efforts(double dt) const
   std::vector<double> e(joints_.size(), 0.0);
   for (std::size_t i = 0; i < joints_.size(); ++i)
   {
-    if (joints_[i].drive >= 0)
-      e[i] = drives_[joints_[i].drive]->getAppliedImpulse(0) / dt;
+    if (joints_[i].drive >= 0 && drive_constraints_)
+      e[i] = drives_[std::size_t(joints_[i].drive)]->getAppliedImpulse(0) / dt;
     else if (coupling_of_joint_[i] >= 0)
       e[i] = couplings_[coupling_of_joint_[i]]->getAppliedImpulse(0) / dt;
     e[i] += feed_forward_[i];
@@ -469,6 +470,12 @@ void ArticulatedRobot::applyWrench(const std::string& link, const Eigen::Vector3
   body_->addLinkTorque(frame.body, toBullet(Eigen::Vector3d(arm.cross(force) + torque)));
 }
 
+void ArticulatedRobot::addJointTorque(std::size_t joint, double torque)
+{
+  feed_forward_[joint] += torque;
+  body_->addJointTorque(joints_[joint].link, btScalar(torque));
+}
+
 void ArticulatedRobot::clearFeedForward()
 {
   std::fill(feed_forward_.begin(), feed_forward_.end(), 0.0);
@@ -507,8 +514,7 @@ void ArticulatedRobot::compensateGravity(const Eigen::Vector3d& gravity)
       const Eigen::Vector3d pivot = frame * (-toEigen(link.m_dVector));
       generalized = axis.cross(moment[k] - mass[k] * pivot).dot(gravity);
     }
-    feed_forward_[i] = -generalized;
-    body_->addJointTorque(k, btScalar(-generalized));
+    addJointTorque(i, -generalized);
   }
 }
 }  // namespace vrrw_physics

@@ -80,6 +80,7 @@ PhysicsWorld::PhysicsWorld(const vrrw_scene::Scene& scene, const WorldOptions& o
   const Eigen::Vector3d& g = options_.gravity;
   world_->setGravity(btVector3(btScalar(g.x()), btScalar(g.y()), btScalar(g.z())));
   world_->getSolverInfo().m_numIterations = options_.solver_iterations;
+  world_->getSolverInfo().m_leastSquaresResidualThreshold = btScalar(options_.solver_residual);
   world_->getSolverInfo().m_timeStep = btScalar(options_.dt);
 
   if (!scene.robots.empty())
@@ -120,7 +121,10 @@ PhysicsWorld::PhysicsWorld(const vrrw_scene::Scene& scene, const WorldOptions& o
       for (std::size_t j = 0; j < joints.size(); ++j)
         if (joints[j].drive >= 0)
           e.robot->drives()[std::size_t(joints[j].drive)]->setTarget(q[j], 0.0);
-      e.robot->addToWorld(world_.get());
+      const bool constraints = options_.drive_scheme == DriveScheme::Constraint;
+      e.robot->addToWorld(world_.get(), constraints);
+      if (!constraints)
+        e.stable_pd = std::make_unique<StablePd>(*e.robot);
       applyMode(e);
       robots_.push_back(std::move(e));
     }
@@ -165,6 +169,13 @@ bool PhysicsWorld::step()
     e.robot->clearFeedForward();
     if (e.gravity_compensation)
       e.robot->compensateGravity(options_.gravity);
+    if (e.stable_pd)
+    {
+      const std::vector<double> tau = e.stable_pd->torques(options_.dt);
+      for (std::size_t j = 0; j < tau.size(); ++j)
+        if (tau[j] != 0.0)
+          e.robot->addJointTorque(j, tau[j]);
+    }
   }
   applySprings();
   world_->stepSimulation(btScalar(options_.dt), 0, btScalar(options_.dt));

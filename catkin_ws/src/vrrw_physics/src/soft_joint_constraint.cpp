@@ -1,7 +1,7 @@
+#include <vrrw_physics/joint_limit.h>
 #include <vrrw_physics/soft_joint_constraint.h>
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
-#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <BulletDynamics/Featherstone/btMultiBodySolverConstraint.h>
 
 namespace vrrw_physics
@@ -32,22 +32,14 @@ void SoftJointConstraint::finalizeMultiDof()
   m_numDofsFinalized = m_jacSizeBoth;
 }
 
-int SoftJointConstraint::islandId() const
-{
-  const btMultiBodyLinkCollider* collider = m_bodyA->getLink(m_linkA).m_collider;
-  for (int i = 0; !collider && i < m_bodyA->getNumLinks(); ++i)
-    collider = m_bodyA->getLink(i).m_collider;
-  return collider ? collider->getIslandTag() : -1;
-}
-
 int SoftJointConstraint::getIslandIdA() const
 {
-  return islandId();
+  return constraintIsland(m_bodyA, m_linkA);
 }
 
 int SoftJointConstraint::getIslandIdB() const
 {
-  return islandId();
+  return constraintIsland(m_bodyA, m_linkA);
 }
 
 void SoftJointConstraint::setGains(double stiffness, double damping)

@@ -51,9 +51,11 @@ struct Response
   double settle_sim = 0.0, settle_ref = 0.0;
 };
 
-Response stepResponse(double k, double d, double step, double seconds)
+Response stepResponse(double k, double d, double step, double seconds, DriveScheme scheme)
 {
-  PhysicsWorld world(pendulumScene());
+  WorldOptions options;
+  options.drive_scheme = scheme;
+  PhysicsWorld world(pendulumScene(), options);
   world.setGains("p", { "p_hinge" }, { k }, { d }, {});
   world.setDriveTargets("p", { "p_hinge" }, { step }, {});
   Response r;
@@ -86,11 +88,15 @@ TEST(ImplicitSpringDamper, ErpAndCfmFollowTheDerivation)
   EXPECT_NEAR(spring_only.cfm, 1.0 / (0.001 * 0.1), 1e-9);
 }
 
-TEST(JointDrive, UnderdampedStepMatchesSecondOrderResponse)
+class DriveStep : public testing::TestWithParam<DriveScheme>
+{
+};
+
+TEST_P(DriveStep, UnderdampedStepMatchesSecondOrderResponse)
 {
   const double step = 0.5;
   const double k = 100.0, d = 0.2 * 2.0 * std::sqrt(k * kInertia);  // zeta = 0.2
-  const Response r = stepResponse(k, d, step, 3.0);
+  const Response r = stepResponse(k, d, step, 3.0, GetParam());
   EXPECT_GT(r.overshoot_ref, 0.5 * step);
   EXPECT_LT(r.max_error, 0.02 * step);
   EXPECT_NEAR(r.overshoot_sim, r.overshoot_ref, 0.02 * step);
@@ -101,10 +107,10 @@ TEST(JointDrive, UnderdampedStepMatchesSecondOrderResponse)
             << " vs " << r.overshoot_ref << ", settling " << r.settle_sim << " s vs " << r.settle_ref << " s\n";
 }
 
-TEST(JointDrive, RigidGainsStableAndMatchOverdampedResponse)
+TEST_P(DriveStep, RigidGainsStableAndMatchOverdampedResponse)
 {
   const double step = 0.5;
-  const Response r = stepResponse(1e5, 8e4, step, 4.0);
+  const Response r = stepResponse(1e5, 8e4, step, 4.0, GetParam());
   EXPECT_LT(r.max_error, 0.02 * step);
   EXPECT_LT(r.overshoot_sim, 1e-6);
   EXPECT_NEAR(r.settle_sim, r.settle_ref, 0.02 * r.settle_ref);
@@ -112,9 +118,11 @@ TEST(JointDrive, RigidGainsStableAndMatchOverdampedResponse)
             << r.settle_ref << " s\n";
 }
 
-TEST(JointDrive, ForceLimitCapsTheEffort)
+TEST_P(DriveStep, ForceLimitCapsTheEffort)
 {
-  PhysicsWorld world(pendulumScene());
+  WorldOptions options;
+  options.drive_scheme = GetParam();
+  PhysicsWorld world(pendulumScene(), options);
   world.setGains("p", { "p_hinge" }, { 1e5 }, { 100.0 }, { 5.0 });
   world.setDriveTargets("p", { "p_hinge" }, { 1.0 }, {});
   for (int i = 0; i < 100; ++i)
@@ -124,3 +132,8 @@ TEST(JointDrive, ForceLimitCapsTheEffort)
   EXPECT_NEAR(world.jointStates("p").position[0], expected, 0.02 * expected);
   EXPECT_NEAR(std::abs(world.jointStates("p").effort[0]), 5.0, 1e-3);
 }
+
+INSTANTIATE_TEST_SUITE_P(Schemes, DriveStep, testing::Values(DriveScheme::StablePd, DriveScheme::Constraint),
+                         [](const testing::TestParamInfo<DriveScheme>& info) {
+                           return info.param == DriveScheme::StablePd ? std::string("StablePd") : std::string("Constraint");
+                         });

@@ -1,5 +1,6 @@
 #pragma once
 #include <vrrw_physics/joint_drive.h>
+#include <vrrw_physics/joint_limit.h>
 
 #include <Eigen/Geometry>
 #include <map>
@@ -12,7 +13,6 @@
 class btMultiBody;
 class btMultiBodyDynamicsWorld;
 class btMultiBodyLinkCollider;
-class btMultiBodyJointLimitConstraint;
 class btCollisionShape;
 
 namespace vrrw_physics
@@ -46,7 +46,7 @@ struct SimJoint
 /// Links joined by fixed joints are merged (mass, inertia, collision shapes); every movable joint
 /// (revolute, continuous, prismatic) becomes a Bullet link whose frame sits at its centre of mass on
 /// the principal axes of inertia. Non-mimic joints get a JointDrive, mimic joints a JointCoupling,
-/// limited joints a btMultiBodyJointLimitConstraint; every Bullet link gets a collider (links without
+/// limited joints a JointLimit; every Bullet link gets a collider (links without
 /// collision geometry get one that collides with nothing, so its constraints are solved).
 /// Featherstone, "Rigid Body Dynamics Algorithms", 2008.
 class ArticulatedRobot
@@ -60,8 +60,9 @@ public:
   ArticulatedRobot(const ArticulatedRobot&) = delete;
   ArticulatedRobot& operator=(const ArticulatedRobot&) = delete;
 
-  /// \brief Adds body, colliders and constraints to `world` (once); removed again by the destructor.
-  void addToWorld(btMultiBodyDynamicsWorld* world);
+  /// \brief Adds body, colliders, couplings, limits and (when `drive_constraints`) the drive
+  /// constraints to `world` (once); removed again by the destructor.
+  void addToWorld(btMultiBodyDynamicsWorld* world, bool drive_constraints = true);
 
   const std::string& name() const { return name_; }
   btMultiBody* body() const { return body_.get(); }
@@ -94,6 +95,10 @@ public:
 
   /// \brief Adds joint torques that cancel gravity on the current configuration (explicit feed-forward).
   void compensateGravity(const Eigen::Vector3d& gravity);
+  /// \brief Adds a joint torque for this step (reported by efforts()).
+  void addJointTorque(std::size_t joint, double torque);
+  /// \brief World pose of a Bullet link frame (COM, principal axes); -1 for the base.
+  Eigen::Isometry3d bodyPose(int body) const;
   /// \brief Forgets the feed-forward torques reported by efforts() (Bullet clears applied torques each step).
   void clearFeedForward();
 
@@ -103,8 +108,6 @@ private:
     int body = -1;  ///< -1 for the base
     Eigen::Isometry3d body_T_link = Eigen::Isometry3d::Identity();
   };
-  /// World pose of a Bullet link frame (COM, principal axes); -1 for the base.
-  Eigen::Isometry3d bodyPose(int body) const;
   const LinkFrame& linkFrame(const std::string& link) const;
   /// World angular and linear (COM) velocity of a Bullet link.
   std::pair<Eigen::Vector3d, Eigen::Vector3d> bodyVelocity(int body) const;
@@ -115,11 +118,12 @@ private:
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
   std::vector<std::unique_ptr<JointDrive>> drives_;
   std::vector<std::unique_ptr<JointCoupling>> couplings_;
-  std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits_;
+  std::vector<std::unique_ptr<JointLimit>> limits_;
   std::vector<SimJoint> joints_;
   std::vector<double> feed_forward_;
   std::vector<int> coupling_of_joint_;
   std::map<std::string, LinkFrame> links_;
   btMultiBodyDynamicsWorld* world_ = nullptr;
+  bool drive_constraints_ = true;
 };
 }  // namespace vrrw_physics

@@ -3,6 +3,7 @@
 #include <vrrw_physics/drive_gains.h>
 #include <vrrw_physics/operator_spring.h>
 #include <vrrw_physics/rigid_object.h>
+#include <vrrw_physics/stable_pd.h>
 
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -32,12 +33,21 @@ public:
   using std::invalid_argument::invalid_argument;
 };
 
+/// \brief How joint drives are made implicit.
+enum class DriveScheme
+{
+  StablePd,   ///< joint-space implicit PD per robot (StablePd), applied as torques: fast
+  Constraint  ///< one soft solver row per drive (JointDrive), solved with contacts: exact coupling
+};
+
 /// \brief Simulation settings.
 struct WorldOptions
 {
+  DriveScheme drive_scheme = DriveScheme::StablePd;
   double dt = 0.001;                                    ///< fixed step (s)
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);
-  int solver_iterations = 30;
+  int solver_iterations = 30;        ///< most Gauss-Seidel sweeps per step
+  double solver_residual = 1e-9;     ///< stop sweeping when the squared impulse change falls below
   bool gravity_compensation = true;  ///< feed-forward torques cancelling gravity on each robot
   double link_friction = 1.0;
   double max_joint_speed = 50.0;     ///< guard: rad/s or m/s
@@ -136,6 +146,7 @@ private:
   {
     vrrw_scene::Robot spec;
     std::unique_ptr<ArticulatedRobot> robot;
+    std::unique_ptr<StablePd> stable_pd;
     DriveGainTable table;
     DriveMode mode = DriveMode::Rigid;
     std::vector<bool> arm_joint;  ///< per joint of robot->joints()

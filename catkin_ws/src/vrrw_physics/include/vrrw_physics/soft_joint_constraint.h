@@ -58,8 +58,6 @@ public:
   double velocity() const;
 
 private:
-  int islandId() const;
-
   int link_b_;
   double coeff_a_;
   double coeff_b_;

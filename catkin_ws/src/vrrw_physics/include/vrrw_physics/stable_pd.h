@@ -1,0 +1,32 @@
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+namespace vrrw_physics
+{
+class ArticulatedRobot;
+
+/// \brief Joint drives of one robot solved in joint space, implicitly (stable PD):
+/// the drive torque uses the end-of-step velocity x,
+///   tau = K*(q* - q - h*x) + D*(qd* - x),  (M + h*(h*K + D)) * x = M*qd + h*(K*(q* - q) + D*qd*),
+/// with M the joint-space inertia (composite rigid body algorithm) reduced onto the non-mimic
+/// joints (q = T*q_r, M_r = T'*M*T). Unconditionally stable for K, D >= 0; torques are then
+/// clamped to each drive's force limit and applied as joint torques, so Bullet's solver only sees
+/// mimic couplings, limits and contacts. Tan, Liu, Turk, "Stable Proportional-Derivative
+/// Controllers", IEEE CG&A 2011; Featherstone, "Rigid Body Dynamics Algorithms", ch. 6 (CRBA).
+class StablePd
+{
+public:
+  explicit StablePd(const ArticulatedRobot& robot);
+
+  /// \brief Joint-space inertia of every movable joint (order of ArticulatedRobot::joints()).
+  Eigen::MatrixXd inertia() const;
+  /// \brief Drive torque per joint (0 for mimic joints) for a step of h seconds.
+  std::vector<double> torques(double h) const;
+
+private:
+  const ArticulatedRobot& robot_;
+  Eigen::MatrixXd reduction_;  ///< T: joints x driven joints
+  std::vector<int> driven_;    ///< joint index of each reduced coordinate
+};
+}  // namespace vrrw_physics
