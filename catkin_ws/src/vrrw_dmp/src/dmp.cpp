@@ -31,14 +31,14 @@ std::string utcNow()
   return buffer;
 }
 
+/// FNV-1a over the 64-bit patterns of the demonstration's times and positions.
 std::string checksum(const vrrw_trajectory::JointTrajectory& demo)
 {
   std::uint64_t hash = 1469598103934665603ull;
   auto mix = [&hash](double value) {
-    unsigned char bytes[sizeof(double)];
-    std::memcpy(bytes, &value, sizeof(double));
-    for (unsigned char b : bytes)
-      hash = (hash ^ b) * 1099511628211ull;
+    std::uint64_t bits;
+    std::memcpy(&bits, &value, sizeof(bits));
+    hash = (hash ^ bits) * 1099511628211ull;
   };
   for (const auto& point : demo.points)
   {
@@ -58,20 +58,20 @@ void checkDemo(const vrrw_trajectory::JointTrajectory& demo)
     throw DmpError("demo: no joints");
   if (demo.points.size() < 3)
     throw DmpError("demo: " + std::to_string(demo.points.size()) + " sample(s), learning needs at least 3");
+  auto where = [](std::size_t k) { return "demo: sample " + std::to_string(k) + ": "; };
   for (std::size_t k = 0; k < demo.points.size(); ++k)
   {
     const auto& point = demo.points[k];
-    const std::string where = "demo: sample " + std::to_string(k) + ": ";
     if (point.positions.size() != n)
-      throw DmpError(where + std::to_string(point.positions.size()) + " positions for " + std::to_string(n) +
+      throw DmpError(where(k) + std::to_string(point.positions.size()) + " positions for " + std::to_string(n) +
                      " joints");
     if (!std::isfinite(point.time))
-      throw DmpError(where + "time is not finite");
+      throw DmpError(where(k) + "time is not finite");
     if (k > 0 && !(point.time > demo.points[k - 1].time))
-      throw DmpError(where + "time " + format(point.time) + " is not after " + format(demo.points[k - 1].time));
+      throw DmpError(where(k) + "time " + format(point.time) + " is not after " + format(demo.points[k - 1].time));
     for (std::size_t j = 0; j < n; ++j)
       if (!std::isfinite(point.positions[j]))
-        throw DmpError(where + "joint '" + demo.joint_names[j] + "' position is not finite");
+        throw DmpError(where(k) + "joint '" + demo.joint_names[j] + "' position is not finite");
   }
 }
 
@@ -253,7 +253,6 @@ DmpState Dmp::begin(const std::vector<double>& start, const std::vector<double>&
                                                                           (demo_amplitude_[j] > 0.0 ? demo_amplitude_[j] : 1.0);
   state.scaled_velocity.assign(n, 0.0);
   state.forcing.resize(n);
-  state.forcing_mid.resize(n);
   state.forcing_end.resize(n);
   state.psi.resize(basis_.size());
   forcingAt(state.phase, state.psi.data(), state.forcing.data());
@@ -286,43 +285,37 @@ void Dmp::step(DmpState& state, double dt) const
 {
   const double longest = kMaxSubstep * state.tau / static_cast<double>(std::max<std::size_t>(basis_.size(), 2) - 1);
   const auto substeps = static_cast<std::size_t>(std::ceil(dt / longest));
+  const double h = dt / static_cast<double>(substeps);
+  if (state.transition.h() != h || state.transition.tau() != state.tau)
+  {
+    state.transition.prepare(parameters_.K, parameters_.damping(), state.tau, h);
+    state.phase_decay = std::exp(-parameters_.alpha * h / state.tau);
+  }
   for (std::size_t i = 0; i < substeps; ++i)
-    integrate(state, dt / static_cast<double>(substeps));
+    integrate(state);
   state.time += dt;
 }
 
-void Dmp::integrate(DmpState& state, double dt) const
+void Dmp::integrate(DmpState& state) const
 {
-  const double tau = state.tau;
-  const double s_end = state.phase * std::exp(-parameters_.alpha * dt / tau);
-  const double s_mid = state.phase * std::exp(-0.5 * parameters_.alpha * dt / tau);
-  forcingAt(s_mid, state.psi.data(), state.forcing_mid.data());
+  const double s_end = state.phase * state.phase_decay;
   forcingAt(s_end, state.psi.data(), state.forcing_end.data());
   const double K = parameters_.K;
   const double D = parameters_.damping();
-  const double h = dt;
+  const double inverse_tau = 1.0 / state.tau;
+  const double inverse_tau2 = inverse_tau * inverse_tau;
   for (std::size_t j = 0; j < dofs(); ++j)
   {
-    const double g = state.goal[j];
     const double c = state.scale[j];
-    auto accel = [&](double x, double v, double f) { return (K * (g - x) - D * v + c * f) / tau; };
-    const double x = state.positions[j];
-    const double v = state.scaled_velocity[j];
-    const double k1x = v / tau;
-    const double k1v = accel(x, v, state.forcing[j]);
-    const double k2x = (v + 0.5 * h * k1v) / tau;
-    const double k2v = accel(x + 0.5 * h * k1x, v + 0.5 * h * k1v, state.forcing_mid[j]);
-    const double k3x = (v + 0.5 * h * k2v) / tau;
-    const double k3v = accel(x + 0.5 * h * k2x, v + 0.5 * h * k2v, state.forcing_mid[j]);
-    const double k4x = (v + h * k3v) / tau;
-    const double k4v = accel(x + h * k3x, v + h * k3v, state.forcing_end[j]);
-    const double x_next = x + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-    const double v_next = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-    state.positions[j] = x_next;
-    state.scaled_velocity[j] = v_next;
-    state.velocities[j] = v_next / tau;
-    state.accelerations[j] = accel(x_next, v_next, state.forcing_end[j]) / tau;
-    state.forcing[j] = state.forcing_end[j];
+    const double f1 = state.forcing_end[j];
+    double x = state.positions[j];
+    double v = state.scaled_velocity[j];
+    state.transition.apply(state.goal[j], c * state.forcing[j], c * f1, x, v);
+    state.positions[j] = x;
+    state.scaled_velocity[j] = v;
+    state.velocities[j] = v * inverse_tau;
+    state.accelerations[j] = (K * (state.goal[j] - x) - D * v + c * f1) * inverse_tau2;
+    state.forcing[j] = f1;
   }
   state.phase = s_end;
 }
@@ -344,7 +337,7 @@ vrrw_trajectory::JointTrajectory Dmp::rollout(const RolloutRequest& request) con
   const std::size_t max_steps = 4 * nominal_steps;
   vrrw_trajectory::JointTrajectory trajectory;
   trajectory.joint_names = joint_names_;
-  trajectory.points.reserve(nominal_steps + 1);
+  trajectory.points.reserve(nominal_steps + nominal_steps / 2 + 1);
   for (std::size_t k = 0;; ++k)
   {
     trajectory.points.push_back({ static_cast<double>(k) * request.dt, state.positions, state.velocities,

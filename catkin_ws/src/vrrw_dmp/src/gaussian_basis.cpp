@@ -1,7 +1,6 @@
 #include "vrrw_dmp/gaussian_basis.h"
 
 #include <cmath>
-#include <limits>
 
 namespace vrrw_dmp
 {
@@ -28,29 +27,47 @@ GaussianBasis::GaussianBasis(std::vector<double> centers, std::vector<double> wi
 double GaussianBasis::evaluate(double s, double* psi, std::size_t& first, std::size_t& last) const
 {
   const std::size_t n = centers_.size();
-  double best = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < n; ++i)
-  {
+  auto exponent = [this, s](std::size_t i) {
     const double d = s - centers_[i];
-    psi[i] = -widths_[i] * d * d;
-    best = psi[i] > best ? psi[i] : best;
-  }
-  first = n;
-  last = 0;
-  for (std::size_t i = 0; i < n; ++i)
+    return -widths_[i] * d * d;
+  };
+  std::size_t low = 0;
+  std::size_t high = n;
+  while (low < high)
   {
-    const double exponent = psi[i] - best;
-    if (exponent > -kCutoff)
-    {
-      psi[i] = std::exp(exponent);
-      first = i < first ? i : first;
-      last = i + 1;
-    }
+    const std::size_t middle = (low + high) / 2;
+    if (centers_[middle] > s)
+      low = middle + 1;
     else
-    {
-      psi[i] = 0.0;
-    }
+      high = middle;
   }
+  std::size_t nearest = low == n ? n - 1 : low;
+  if (low > 0 && low < n && centers_[low - 1] - s < s - centers_[low])
+    nearest = low - 1;
+  // exponents are unimodal in i (h_i c_i^2 is the same for every i), so grow the range from the
+  // nearest centre until they fall kCutoff below the largest
+  double best = exponent(nearest);
+  psi[nearest] = best;
+  first = nearest;
+  while (first > 0)
+  {
+    const double e = exponent(first - 1);
+    if (e < best - kCutoff)
+      break;
+    psi[--first] = e;
+    best = e > best ? e : best;
+  }
+  last = nearest + 1;
+  while (last < n)
+  {
+    const double e = exponent(last);
+    if (e < best - kCutoff)
+      break;
+    psi[last++] = e;
+    best = e > best ? e : best;
+  }
+  for (std::size_t i = first; i < last; ++i)
+    psi[i] = std::exp(psi[i] - best);
   return best;
 }
 }  // namespace vrrw_dmp

@@ -38,47 +38,48 @@ LocalPolynomialDerivative::LocalPolynomialDerivative(const std::vector<double>& 
   const std::size_t n = times.size();
   if (n < 3)
     throw DmpError("derivative: " + std::to_string(n) + " samples, the quadratic fit needs at least 3");
-  const std::size_t width = std::min(n, 2 * std::max<std::size_t>(half_window, 1) + 1);
-  stencils_.resize(n);
+  width_ = std::min(n, 2 * std::max<std::size_t>(half_window, 1) + 1);
+  begin_.resize(n);
+  first_.resize(n * width_);
+  second_.resize(n * width_);
   for (std::size_t k = 0; k < n; ++k)
   {
-    Stencil& stencil = stencils_[k];
-    stencil.begin = std::min(k - std::min(k, width / 2), n - width);
+    const std::size_t begin = std::min(k - std::min(k, width_ / 2), n - width_);
+    begin_[k] = begin;
     const double t0 = times[k];
-    const double scale = times[stencil.begin + width - 1] - times[stencil.begin];
+    const double scale = times[begin + width_ - 1] - times[begin];
     Matrix3 normal{};
-    for (std::size_t i = 0; i < width; ++i)
+    for (std::size_t i = 0; i < width_; ++i)
     {
-      const double d = (times[stencil.begin + i] - t0) / scale;
+      const double d = (times[begin + i] - t0) / scale;
       const std::array<double, 3> row{ 1.0, d, d * d };
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c)
           normal[r][c] += row[r] * row[c];
     }
     const Matrix3 inv = inverse(normal);
-    stencil.first.resize(width);
-    stencil.second.resize(width);
-    for (std::size_t i = 0; i < width; ++i)
+    for (std::size_t i = 0; i < width_; ++i)
     {
-      const double d = (times[stencil.begin + i] - t0) / scale;
-      stencil.first[i] = (inv[1][0] + inv[1][1] * d + inv[1][2] * d * d) / scale;
-      stencil.second[i] = 2.0 * (inv[2][0] + inv[2][1] * d + inv[2][2] * d * d) / (scale * scale);
+      const double d = (times[begin + i] - t0) / scale;
+      first_[k * width_ + i] = (inv[1][0] + inv[1][1] * d + inv[1][2] * d * d) / scale;
+      second_[k * width_ + i] = 2.0 * (inv[2][0] + inv[2][1] * d + inv[2][2] * d * d) / (scale * scale);
     }
   }
 }
 
 void LocalPolynomialDerivative::apply(const double* values, std::size_t stride, double* first, double* second) const
 {
-  for (std::size_t k = 0; k < stencils_.size(); ++k)
+  for (std::size_t k = 0; k < begin_.size(); ++k)
   {
-    const Stencil& stencil = stencils_[k];
-    const double* v = values + stencil.begin * stride;
+    const double* v = values + begin_[k] * stride;
+    const double* w1 = first_.data() + k * width_;
+    const double* w2 = second_.data() + k * width_;
     double d1 = 0.0;
     double d2 = 0.0;
-    for (std::size_t i = 0; i < stencil.first.size(); ++i)
+    for (std::size_t i = 0; i < width_; ++i)
     {
-      d1 += stencil.first[i] * v[i * stride];
-      d2 += stencil.second[i] * v[i * stride];
+      d1 += w1[i] * v[i * stride];
+      d2 += w2[i] * v[i * stride];
     }
     first[k * stride] = d1;
     second[k * stride] = d2;

@@ -141,12 +141,14 @@ TEST(Dmp, DoublingTauDoublesDurationAndKeepsPath)
       EXPECT_NEAR(b.points[k].positions[j], a.points[k].positions[j], 1e-12);
       EXPECT_NEAR(b.points[k].velocities[j], 0.5 * a.points[k].velocities[j], 1e-12);
     }
+  // the slow motion sampled twice as finely: the same path up to the integrator's discretisation
+  // error between the two step lengths (second order in the forcing term's linear hold)
   RolloutRequest slow_fine = fineRollout(0.004);
   slow_fine.tau = slow.tau;
   const auto c = dmp.rollout(slow_fine);
   for (std::size_t k = 0; k < a.points.size(); k += 25)
     for (std::size_t j = 0; j < 6; ++j)
-      EXPECT_NEAR(c.points[2 * k].positions[j], a.points[k].positions[j], 1e-6);
+      EXPECT_NEAR(c.points[2 * k].positions[j], a.points[k].positions[j], 1e-5);
 }
 
 TEST(Dmp, LearnsFromStronglyNonUniformSampling)

@@ -5,6 +5,7 @@
 
 #include "vrrw_dmp/dmp_parameters.h"
 #include "vrrw_dmp/gaussian_basis.h"
+#include "vrrw_dmp/spring_damper_step.h"
 #include "vrrw_trajectory/joint_trajectory.h"
 
 namespace vrrw_dmp
@@ -32,9 +33,10 @@ struct DmpState
   std::vector<double> scale;  ///< what multiplies the forcing term, per joint
   std::vector<double> scaled_velocity;  ///< v = tau dx/dt
   std::vector<double> forcing;          ///< f(s) at the current phase, per joint
-  std::vector<double> forcing_mid;      ///< scratch: f at the half step
   std::vector<double> forcing_end;      ///< scratch: f at the end of the step
   std::vector<double> psi;              ///< scratch: basis values
+  SpringDamperStep transition;          ///< cached for the last step length
+  double phase_decay = 1.0;             ///< exp(-alpha h / tau) for that step
 };
 
 /// \brief A new start, goal and speed for a rollout; empty vectors and tau <= 0 mean "as demonstrated".
@@ -63,8 +65,10 @@ struct RolloutRequest
 /// AmplitudeScaling::demo_amplitude (or ::automatic for just those joints): the forcing term is then
 /// scaled by the demonstrated range, a constant, and the joint's motion is reproduced around any goal.
 ///
-/// Rollout: 4th-order Runge-Kutta on (x, v), exact exponential decay of the phase; steps longer than a
-/// fifth of the basis spacing are split internally, so a coarse control period loses no accuracy.
+/// Rollout: the exact solution of the linear spring-damper over each step with the forcing term
+/// linear in between (SpringDamperStep), exact exponential decay of the phase; one forcing
+/// evaluation per step. Steps longer than kMaxSubstep of the basis spacing are split internally, so a
+/// coarse control period loses no accuracy.
 class Dmp
 {
 public:
@@ -107,10 +111,10 @@ public:
 private:
   /// Steps longer than this fraction of the basis spacing (in time) are split, so that the forcing
   /// term's bumps are resolved at any dt.
-  static constexpr double kMaxSubstep = 0.2;
+  static constexpr double kMaxSubstep = 0.1;
 
   void forcingAt(double s, double* psi, double* forcing) const;
-  void integrate(DmpState& state, double dt) const;
+  void integrate(DmpState& state) const;
 
   std::vector<std::string> joint_names_;
   DmpParameters parameters_;

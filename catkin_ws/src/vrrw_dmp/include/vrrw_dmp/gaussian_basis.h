@@ -27,8 +27,9 @@ public:
   const std::vector<double>& centers() const { return centers_; }
   const std::vector<double>& widths() const { return widths_; }
 
-  /// \brief psi[i] = psi_i(s) / max_i psi_i(s) for every i (zero below the cutoff), the half-open
-  /// index range [first, last) of the non-zero entries; returns log(max_i psi_i(s)). Never allocates.
+  /// \brief psi[i] = psi_i(s) / max_i psi_i(s) for i in the returned range [first, last) outside of
+  /// which every ratio is below exp(-kCutoff) (entries there are not written); returns
+  /// log(max_i psi_i(s)). \a psi has size() entries. Never allocates.
   double evaluate(double s, double* psi, std::size_t& first, std::size_t& last) const;
 
 private:

@@ -21,15 +21,12 @@ public:
   /// \brief Derivatives of values[k * stride] (k = 0..samples-1) into first[k * stride], second[k * stride].
   void apply(const double* values, std::size_t stride, double* first, double* second) const;
 
-  std::size_t samples() const { return stencils_.size(); }
+  std::size_t samples() const { return begin_.size(); }
 
 private:
-  struct Stencil
-  {
-    std::size_t begin = 0;
-    std::vector<double> first;
-    std::vector<double> second;
-  };
-  std::vector<Stencil> stencils_;
+  std::size_t width_ = 0;
+  std::vector<std::size_t> begin_;  ///< first sample of each sample's window
+  std::vector<double> first_;       ///< samples x width_ weights giving dx/dt
+  std::vector<double> second_;      ///< samples x width_ weights giving d2x/dt2
 };
 }  // namespace vrrw_dmp

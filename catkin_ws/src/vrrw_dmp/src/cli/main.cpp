@@ -1,0 +1,225 @@
+// vrrw_dmp: learn a DMP from a demonstration CSV, roll it out to a new start/goal/tau, plot the result.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "options.h"
+#include "vrrw_dmp/dmp.h"
+#include "vrrw_dmp/dmp_error.h"
+#include "vrrw_dmp/dmp_yaml.h"
+#include "vrrw_trajectory/csv.h"
+
+namespace
+{
+using vrrw_dmp::Options;
+using vrrw_dmp::OptionError;
+
+const char* const kUsage =
+    "usage: vrrw_dmp learn --demo FILE.csv --out MODEL.yaml [--basis N] [--alpha A] [--K K] [--D D]\n"
+    "                      [--scaling goal|amplitude|auto]\n"
+    "       vrrw_dmp rollout --model MODEL.yaml --out FILE.csv [--start q1,..] [--goal q1,..] [--tau T] [--dt DT]\n"
+    "       vrrw_dmp plot --demo FILE.csv --rollout FILE.csv [--rollout FILE2.csv ..] --out FILE.png [--title T]\n"
+    "CSV: header 't,<joint>..,<joint>_vel..', rows t, q1..qn, qd1..qdn. Values starting with '-' work as\n"
+    "--goal=-0.5,1.2 or --goal -0.5,1.2.\n";
+
+/// Largest RMSE over joints of the demonstration against the DMP rolled out as demonstrated,
+/// linearly interpolated at the demonstration's time stamps.
+double reproductionRmse(const vrrw_dmp::Dmp& dmp, const vrrw_trajectory::JointTrajectory& demo)
+{
+  vrrw_dmp::RolloutRequest request;
+  request.dt = std::min(0.002, dmp.demoDuration() / 100.0);
+  const auto rollout = dmp.rollout(request);
+  double worst = 0.0;
+  for (std::size_t j = 0; j < dmp.dofs(); ++j)
+  {
+    double sum = 0.0;
+    for (const auto& point : demo.points)
+    {
+      const double t = point.time - demo.points.front().time;
+      const auto k = std::min(static_cast<std::size_t>(t / request.dt), rollout.points.size() - 2);
+      const double u = (t - rollout.points[k].time) / request.dt;
+      const double q = (1.0 - u) * rollout.points[k].positions[j] + u * rollout.points[k + 1].positions[j];
+      sum += (q - point.positions[j]) * (q - point.positions[j]);
+    }
+    worst = std::max(worst, std::sqrt(sum / static_cast<double>(demo.points.size())));
+  }
+  return worst;
+}
+
+int learn(int argc, char** argv)
+{
+  const Options options(argc, argv, 2, { "demo", "out", "basis", "alpha", "K", "D", "scaling" });
+  const std::string demo_path = options.text("demo");
+  const std::string out = options.text("out");
+  vrrw_dmp::DmpParameters parameters;
+  parameters.basis_count = options.count("basis", parameters.basis_count);
+  parameters.alpha = options.number("alpha", parameters.alpha);
+  parameters.K = options.number("K", parameters.K);
+  if (options.has("D"))
+    parameters.D = options.number("D", 0.0);
+  parameters.scaling = vrrw_dmp::amplitudeScalingFromString(options.text("scaling", "goal"));
+  parameters.validate();
+
+  const auto demo = vrrw_trajectory::readCsv(demo_path);
+  vrrw_dmp::DmpProvenance provenance;
+  provenance.source = demo_path;
+  const auto dmp = vrrw_dmp::Dmp::learn(demo, parameters, provenance);
+  for (const auto& warning : dmp.warnings())
+    std::cerr << "vrrw dmp: warning: " << warning << "\n";
+  vrrw_dmp::saveDmp(dmp, out);
+  std::cout << "learned " << dmp.dofs() << " joints from " << demo_path << " (" << demo.points.size()
+            << " samples, " << dmp.demoDuration() << " s), N = " << parameters.basis_count
+            << ", reproduction RMSE " << reproductionRmse(dmp, demo) << " rad -> " << out << "\n";
+  return 0;
+}
+
+int rollout(int argc, char** argv)
+{
+  const Options options(argc, argv, 2, { "model", "out", "start", "goal", "tau", "dt" });
+  const auto dmp = vrrw_dmp::loadDmp(options.text("model"));
+  const std::string out = options.text("out");
+  vrrw_dmp::RolloutRequest request;
+  request.start = options.numbers("start");
+  request.goal = options.numbers("goal");
+  request.tau = options.number("tau", 0.0);
+  if (options.has("tau") && !(request.tau > 0.0))
+    throw OptionError("--tau: must be > 0");
+  request.dt = options.number("dt", request.dt);
+  const auto trajectory = dmp.rollout(request);
+  vrrw_trajectory::writeCsv(out, trajectory);
+  std::cout << "rolled out " << trajectory.points.size() << " samples over " << trajectory.duration() << " s -> "
+            << out << "\n";
+  return 0;
+}
+
+std::string jsonString(const std::string& text)
+{
+  std::string quoted = "\"";
+  for (char c : text)
+  {
+    if (c == '"' || c == '\\')
+      quoted += '\\';
+    if (static_cast<unsigned char>(c) < 0x20)
+      quoted += ' ';
+    else
+      quoted += c;
+  }
+  return quoted + "\"";
+}
+
+void appendSeries(std::ostringstream& json, const std::string& label, const vrrw_trajectory::JointTrajectory& data,
+                  const std::vector<std::string>& joints, const std::string& path)
+{
+  std::vector<std::size_t> column;
+  for (const auto& name : joints)
+  {
+    const auto found = std::find(data.joint_names.begin(), data.joint_names.end(), name);
+    if (found == data.joint_names.end())
+      throw vrrw_trajectory::TrajectoryError(path + ": has no joint '" + name + "' (the demonstration has it)");
+    column.push_back(static_cast<std::size_t>(found - data.joint_names.begin()));
+  }
+  json << "{\"label\":" << jsonString(label) << ",\"t\":[";
+  for (std::size_t k = 0; k < data.points.size(); ++k)
+    json << (k ? "," : "") << data.points[k].time - data.points.front().time;
+  json << "],\"q\":[";
+  for (std::size_t j = 0; j < column.size(); ++j)
+  {
+    json << (j ? ",[" : "[");
+    for (std::size_t k = 0; k < data.points.size(); ++k)
+      json << (k ? "," : "") << data.points[k].positions[column[j]];
+    json << "]";
+  }
+  json << "]}";
+}
+
+int runPlotScript(const std::string& json)
+{
+  int pipe_fds[2];
+  if (pipe(pipe_fds) != 0)
+    throw std::runtime_error("plot: cannot create a pipe");
+  const std::string script = std::string(VRRW_DMP_SCRIPTS) + "/plot_dmp.py";
+  const pid_t child = fork();
+  if (child == 0)
+  {
+    dup2(pipe_fds[0], STDIN_FILENO);
+    close(pipe_fds[0]);
+    close(pipe_fds[1]);
+    execl("/usr/bin/python3", "python3", script.c_str(), static_cast<char*>(nullptr));
+    std::perror("vrrw dmp: plot: cannot run /usr/bin/python3");
+    _exit(127);
+  }
+  close(pipe_fds[0]);
+  FILE* to_child = fdopen(pipe_fds[1], "w");
+  std::fwrite(json.data(), 1, json.size(), to_child);
+  std::fclose(to_child);
+  int status = 0;
+  waitpid(child, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
+int plot(int argc, char** argv)
+{
+  const Options options(argc, argv, 2, { "demo", "rollout", "out", "title" });
+  const std::string demo_path = options.text("demo");
+  const std::string out = options.text("out");
+  const auto rollouts = options.all("rollout");
+  if (rollouts.empty())
+    throw OptionError("--rollout is required (give it once per DMP trajectory)");
+  const auto demo = vrrw_trajectory::readCsv(demo_path);
+  std::ostringstream json;
+  json.precision(9);
+  json << "{\"out\":" << jsonString(out) << ",\"title\":" << jsonString(options.text("title", "")) << ",\"joints\":[";
+  for (std::size_t j = 0; j < demo.joint_names.size(); ++j)
+    json << (j ? "," : "") << jsonString(demo.joint_names[j]);
+  json << "],\"series\":[";
+  appendSeries(json, "demonstration", demo, demo.joint_names, demo_path);
+  for (const auto& path : rollouts)
+  {
+    json << ",";
+    appendSeries(json, rollouts.size() == 1 ? "DMP" : "DMP " + path.substr(path.find_last_of('/') + 1),
+                 vrrw_trajectory::readCsv(path), demo.joint_names, path);
+  }
+  json << "]}";
+  const int status = runPlotScript(json.str());
+  if (status != 0)
+    throw std::runtime_error("plot: the plot script failed (exit " + std::to_string(status) + ")");
+  std::cout << "plotted " << demo.joint_names.size() << " joints -> " << out << "\n";
+  return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  const std::string command = argc > 1 ? argv[1] : "";
+  try
+  {
+    if (command == "learn")
+      return learn(argc, argv);
+    if (command == "rollout")
+      return rollout(argc, argv);
+    if (command == "plot")
+      return plot(argc, argv);
+    if (command == "help" || command == "--help" || command == "-h")
+    {
+      std::cout << kUsage;
+      return 0;
+    }
+    std::cerr << "vrrw dmp: unknown command '" << command << "'\n" << kUsage;
+    return 2;
+  }
+  catch (const OptionError& e)
+  {
+    std::cerr << "vrrw dmp " << command << ": " << e.what() << "\n";
+    return 2;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "vrrw dmp " << command << ": " << e.what() << "\n";
+    return 1;
+  }
+}
