@@ -1,0 +1,429 @@
+#include "vrrw_kinematics/collision_world.h"
+
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <sstream>
+#include <sys/stat.h>
+
+#include "vrrw_kinematics/kinematics_error.h"
+
+namespace vrrw_kinematics
+{
+namespace
+{
+std::uint64_t fnv1a(const std::string& text, std::uint64_t hash = 1469598103934665603ull)
+{
+  for (const unsigned char c : text)
+  {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+std::string describe(const Eigen::Isometry3d& pose)
+{
+  std::ostringstream out;
+  out.precision(12);
+  out << pose.matrix().reshaped().transpose();
+  return out.str();
+}
+
+std::string describe(const vrrw_scene::Shape& shape)
+{
+  std::ostringstream out;
+  out.precision(12);
+  out << static_cast<int>(shape.type) << " " << shape.box_size.transpose() << " " << shape.radius << " "
+      << shape.length << " " << shape.mesh_path << " " << describe(shape.origin);
+  return out.str();
+}
+
+bool aabbOverlap(const Eigen::Vector3d& ca, const Eigen::Vector3d& ha, const Eigen::Vector3d& cb,
+                 const Eigen::Vector3d& hb)
+{
+  return ((ca - cb).cwiseAbs() - ha - hb).maxCoeff() <= 0.0;
+}
+}  // namespace
+
+void elementAabb(const CollisionElement& element, const Eigen::Isometry3d& pose, Eigen::Vector3d& center,
+                 Eigen::Vector3d& half)
+{
+  center = pose.translation();
+  const Eigen::Matrix3d& r = pose.linear();
+  switch (element.type)
+  {
+    case vrrw_scene::Shape::Type::Box:
+      half = r.cwiseAbs() * element.half_extents;
+      return;
+    case vrrw_scene::Shape::Type::Cylinder:
+    {
+      const Eigen::Vector3d axis = r.col(2);
+      for (int i = 0; i < 3; ++i)
+        half[i] = std::abs(axis[i]) * element.half_extents.z() +
+                  element.half_extents.x() * std::sqrt(std::max(0.0, 1.0 - axis[i] * axis[i]));
+      return;
+    }
+    default:
+      half.setConstant(element.bounding_radius);
+  }
+}
+
+bool elementsCollide(const CollisionElement& a, const Eigen::Isometry3d& pose_a, const CollisionElement& b,
+                     const Eigen::Isometry3d& pose_b)
+{
+  static const fcl::CollisionRequestd request;
+  fcl::CollisionResultd result;
+  fcl::collide(a.geometry.get(), pose_a, b.geometry.get(), pose_b, request, result);
+  return result.isCollision();
+}
+
+CollisionWorld::CollisionWorld(const std::string& urdf, const std::vector<vrrw_scene::Object>& objects,
+                               const std::vector<std::string>& robot_names)
+  : model_(RobotModel::fromUrdf(urdf)), robot_names_(robot_names), urdf_(urdf)
+{
+  for (std::size_t l = 0; l < model_.links().size(); ++l)
+  {
+    const LinkModel& link = model_.links()[l];
+    if (link.collision.empty())
+      continue;
+    CollisionBody body;
+    body.name = link.name;
+    body.robot = robotOf(link.name);
+    body.link = static_cast<int>(l);
+    addBody(body, link.collision);
+  }
+  for (const vrrw_scene::Object& object : objects)
+  {
+    if (bodyIndex(object.name) >= 0)
+      throw KinematicsError(ErrorCode::InvalidArgument, "object " + object.name + ": name already used by a link");
+    CollisionBody body;
+    body.name = object.name;
+    body.offset = object.pose;
+    body.object = true;
+    addBody(body, object.collision);
+  }
+  rebuildPairs();
+}
+
+CollisionWorld CollisionWorld::fromScene(const vrrw_scene::Scene& scene)
+{
+  std::vector<std::string> names;
+  for (const vrrw_scene::Robot& robot : scene.robots)
+    names.push_back(robot.name);
+  return CollisionWorld(scene.urdf, scene.objects, names);
+}
+
+std::string CollisionWorld::robotOf(const std::string& link) const
+{
+  if (robot_names_.empty())
+    return model_.name().empty() ? "robot" : model_.name();
+  std::string best;
+  for (const std::string& name : robot_names_)
+    if (link.compare(0, name.size() + 1, name + "_") == 0 && name.size() > best.size())
+      best = name;
+  return best;
+}
+
+void CollisionWorld::addBody(CollisionBody body, const std::vector<vrrw_scene::Shape>& shapes)
+{
+  const int body_index = static_cast<int>(bodies_.size());
+  for (const vrrw_scene::Shape& shape : shapes)
+  {
+    CollisionElement element;
+    element.body = body_index;
+    element.local = shape.origin;
+    element.type = shape.type;
+    switch (shape.type)
+    {
+      case vrrw_scene::Shape::Type::Box:
+        element.geometry = std::make_shared<fcl::Boxd>(shape.box_size.x(), shape.box_size.y(), shape.box_size.z());
+        element.half_extents = 0.5 * shape.box_size;
+        element.bounding_radius = element.half_extents.norm();
+        break;
+      case vrrw_scene::Shape::Type::Cylinder:
+        element.geometry = std::make_shared<fcl::Cylinderd>(shape.radius, shape.length);
+        element.half_extents = Eigen::Vector3d(shape.radius, shape.radius, 0.5 * shape.length);
+        element.bounding_radius = std::hypot(shape.radius, 0.5 * shape.length);
+        break;
+      case vrrw_scene::Shape::Type::Sphere:
+        element.geometry = std::make_shared<fcl::Sphered>(shape.radius);
+        element.half_extents.setConstant(shape.radius);
+        element.bounding_radius = shape.radius;
+        break;
+      case vrrw_scene::Shape::Type::Mesh:
+        throw KinematicsError(ErrorCode::InvalidArgument,
+                              "body " + body.name + ": mesh collision geometry " + shape.mesh_path +
+                                  " is not supported; use primitives");
+    }
+    body.elements.push_back(static_cast<int>(elements_.size()));
+    elements_.push_back(element);
+  }
+  bodies_.push_back(body);
+}
+
+int CollisionWorld::bodyIndex(const std::string& name) const
+{
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (bodies_[b].name == name)
+      return static_cast<int>(b);
+  return -1;
+}
+
+void CollisionWorld::rebuildPairs()
+{
+  pairs_.clear();
+  for (std::size_t i = 0; i < elements_.size(); ++i)
+    for (std::size_t j = i + 1; j < elements_.size(); ++j)
+    {
+      const int bi = elements_[i].body, bj = elements_[j].body;
+      if (bi != bj && !acm_.allowed(bodies_[bi].name, bodies_[bj].name))
+        pairs_.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    }
+}
+
+void CollisionWorld::setAllowed(const std::string& a, const std::string& b, bool allowed)
+{
+  for (const std::string& name : { a, b })
+    if (bodyIndex(name) < 0)
+      throw KinematicsError(ErrorCode::UnknownLink, "body " + name + ": no link or object with collision geometry");
+  if (allowed)
+    acm_.allow(a, b, "user");
+  else
+    acm_.forbid(a, b);
+  rebuildPairs();
+}
+
+std::string CollisionWorld::contentKey(int samples, std::uint64_t seed) const
+{
+  std::uint64_t hash = fnv1a(urdf_);
+  for (const CollisionBody& body : bodies_)
+  {
+    hash = fnv1a(body.name + " " + std::to_string(body.link) + " " + describe(body.offset), hash);
+    for (const int e : body.elements)
+    {
+      vrrw_scene::Shape shape;
+      shape.type = elements_[e].type;
+      shape.box_size = 2.0 * elements_[e].half_extents;
+      shape.radius = elements_[e].bounding_radius;
+      shape.origin = elements_[e].local;
+      hash = fnv1a(describe(shape), hash);
+    }
+  }
+  hash = fnv1a(std::to_string(samples) + " " + std::to_string(seed) + " acm-v1", hash);
+  char text[17];
+  std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
+void CollisionWorld::bodyTransforms(const Eigen::VectorXd& variables, std::vector<Eigen::Isometry3d>& out) const
+{
+  std::vector<Eigen::Isometry3d> links;
+  model_.linkTransforms(variables, links);
+  out.resize(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    out[b] = bodies_[b].link >= 0 ? links[bodies_[b].link] * bodies_[b].offset : bodies_[b].offset;
+}
+
+void CollisionWorld::computeAllowedCollisions(int samples, std::uint64_t seed)
+{
+  AllowedCollisionMatrix acm;
+  for (const auto& entry : acm_.entries())
+    if (entry.second == "attached" || entry.second == "user")
+      acm.allow(entry.first.first, entry.first.second, entry.second);
+
+  std::vector<int> link_body(model_.links().size(), -1);
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (!bodies_[b].object)
+      link_body[bodies_[b].link] = static_cast<int>(b);
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+  {
+    if (bodies_[b].object)
+      continue;
+    for (int l = model_.links()[bodies_[b].link].parent_link; l >= 0; l = model_.links()[l].parent_link)
+      if (link_body[l] >= 0)
+      {
+        acm.allow(bodies_[b].name, bodies_[link_body[l]].name, "adjacent");
+        break;
+      }
+  }
+
+  std::vector<std::pair<int, int>> candidates;
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+    for (std::size_t j = i + 1; j < bodies_.size(); ++j)
+      if (!acm.allowed(bodies_[i].name, bodies_[j].name))
+        candidates.emplace_back(static_cast<int>(i), static_cast<int>(j));
+  std::vector<int> hits(candidates.size(), 0);
+  std::mt19937_64 rng(seed);
+  Eigen::VectorXd variables(model_.variableCount());
+  std::vector<Eigen::Isometry3d> body_poses;
+  std::vector<Eigen::Isometry3d> element_poses(elements_.size());
+  std::vector<Eigen::Vector3d> centers(elements_.size()), halves(elements_.size());
+  for (int s = 0; s < samples; ++s)
+  {
+    for (std::size_t v = 0; v < model_.variableCount(); ++v)
+    {
+      const JointModel& joint = model_.joints()[model_.variableJoints()[v]];
+      variables[v] = std::uniform_real_distribution<double>(joint.lower, joint.upper)(rng);
+    }
+    bodyTransforms(variables, body_poses);
+    for (std::size_t e = 0; e < elements_.size(); ++e)
+    {
+      element_poses[e] = body_poses[elements_[e].body] * elements_[e].local;
+      elementAabb(elements_[e], element_poses[e], centers[e], halves[e]);
+    }
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+    {
+      bool collide = false;
+      for (const int ea : bodies_[candidates[c].first].elements)
+        for (const int eb : bodies_[candidates[c].second].elements)
+          if (!collide && aabbOverlap(centers[ea], halves[ea], centers[eb], halves[eb]))
+            collide = elementsCollide(elements_[ea], element_poses[ea], elements_[eb], element_poses[eb]);
+      hits[c] += collide ? 1 : 0;
+    }
+  }
+  const auto fixed_in_world = [this](const CollisionBody& body) {
+    for (int l = body.link; l > 0; l = model_.links()[l].parent_link)
+      if (model_.joints()[model_.links()[l].parent_joint].moves())
+        return false;
+    return true;
+  };
+  for (std::size_t c = 0; c < candidates.size(); ++c)
+  {
+    const CollisionBody& a = bodies_[candidates[c].first];
+    const CollisionBody& b = bodies_[candidates[c].second];
+    const bool same_robot = !a.robot.empty() && a.robot == b.robot;
+    if (hits[c] == samples && samples > 0 && (same_robot || (fixed_in_world(a) && fixed_in_world(b))))
+      acm.allow(a.name, b.name, "always");
+    else if (hits[c] == 0 && samples > 0 && same_robot)
+      acm.allow(a.name, b.name, "never");
+  }
+  acm_ = acm;
+  rebuildPairs();
+}
+
+bool CollisionWorld::loadOrComputeAllowedCollisions(const std::string& cache_dir, int samples, std::uint64_t seed)
+{
+  const std::string key = contentKey(samples, seed);
+  const std::string path = cache_dir + "/acm_" + key + ".txt";
+  AllowedCollisionMatrix cached;
+  if (!cache_dir.empty() && cached.load(path, key))
+  {
+    acm_ = cached;
+    rebuildPairs();
+    return true;
+  }
+  computeAllowedCollisions(samples, seed);
+  if (!cache_dir.empty())
+  {
+    ::mkdir(cache_dir.c_str(), 0755);
+    acm_.save(path, key);
+  }
+  return false;
+}
+
+Contact CollisionWorld::check(const Eigen::VectorXd& variables) const
+{
+  std::vector<Eigen::Isometry3d> body_poses;
+  bodyTransforms(variables, body_poses);
+  Contact contact;
+  for (const auto& pair : pairs_)
+  {
+    const CollisionElement& a = elements_[pair.first];
+    const CollisionElement& b = elements_[pair.second];
+    const Eigen::Isometry3d pa = body_poses[a.body] * a.local, pb = body_poses[b.body] * b.local;
+    Eigen::Vector3d ca, ha, cb, hb;
+    elementAabb(a, pa, ca, ha);
+    elementAabb(b, pb, cb, hb);
+    if (aabbOverlap(ca, ha, cb, hb) && elementsCollide(a, pa, b, pb))
+    {
+      contact.collision = true;
+      contact.body_a = bodies_[a.body].name;
+      contact.body_b = bodies_[b.body].name;
+      return contact;
+    }
+  }
+  return contact;
+}
+
+DistanceReport CollisionWorld::distance(const Eigen::VectorXd& variables, const std::string& body) const
+{
+  const int only = body.empty() ? -1 : bodyIndex(body);
+  if (!body.empty() && only < 0)
+    throw KinematicsError(ErrorCode::UnknownLink, "body " + body + ": no link or object with collision geometry");
+  std::vector<Eigen::Isometry3d> body_poses;
+  bodyTransforms(variables, body_poses);
+  DistanceReport report;
+  fcl::DistanceRequestd request;
+  request.gjk_solver_type = fcl::GST_INDEP;
+  for (const auto& pair : pairs_)
+  {
+    const CollisionElement& a = elements_[pair.first];
+    const CollisionElement& b = elements_[pair.second];
+    if (only >= 0 && a.body != only && b.body != only)
+      continue;
+    fcl::DistanceResultd result;
+    const double d = fcl::distance(a.geometry.get(), body_poses[a.body] * a.local, b.geometry.get(),
+                                   body_poses[b.body] * b.local, request, result);
+    if (d < report.distance)
+    {
+      report.distance = d;
+      report.body_a = bodies_[a.body].name;
+      report.body_b = bodies_[b.body].name;
+    }
+  }
+  return report;
+}
+
+void CollisionWorld::setObjectPose(const std::string& object, const Eigen::Isometry3d& pose)
+{
+  const int b = bodyIndex(object);
+  if (b < 0 || !bodies_[b].object)
+    throw KinematicsError(ErrorCode::InvalidArgument, "object " + object + ": not a scene object");
+  if (bodies_[b].link >= 0)
+    throw KinematicsError(ErrorCode::InvalidArgument, "object " + object + ": attached; detach it first");
+  bodies_[b].offset = pose;
+}
+
+void CollisionWorld::attachObject(const std::string& object, const std::string& link,
+                                  const Eigen::VectorXd& variables, const std::vector<std::string>& touch_links)
+{
+  const int b = bodyIndex(object);
+  if (b < 0 || !bodies_[b].object)
+    throw KinematicsError(ErrorCode::InvalidArgument, "object " + object + ": not a scene object");
+  const int l = model_.linkIndex(link);
+  std::vector<Eigen::Isometry3d> body_poses, links;
+  bodyTransforms(variables, body_poses);
+  model_.linkTransforms(variables, links);
+  bodies_[b].offset = links[l].inverse() * body_poses[b];
+  bodies_[b].link = l;
+  bodies_[b].robot = robotOf(link);
+  acm_.allow(object, link, "attached");
+  for (const std::string& touch : touch_links)
+    if (touch != object)
+      acm_.allow(object, touch, "attached");
+  rebuildPairs();
+}
+
+void CollisionWorld::detachObject(const std::string& object, const Eigen::VectorXd& variables)
+{
+  const int b = bodyIndex(object);
+  if (b < 0 || !bodies_[b].object || bodies_[b].link < 0)
+    throw KinematicsError(ErrorCode::InvalidArgument, "object " + object + ": not attached");
+  std::vector<Eigen::Isometry3d> body_poses;
+  bodyTransforms(variables, body_poses);
+  bodies_[b].offset = body_poses[b];
+  bodies_[b].link = -1;
+  bodies_[b].robot.clear();
+  std::vector<std::pair<std::string, std::string>> attached;
+  for (const auto& entry : acm_.entries())
+    if (entry.second == "attached" && (entry.first.first == object || entry.first.second == object))
+      attached.push_back(entry.first);
+  for (const auto& pair : attached)
+    acm_.forbid(pair.first, pair.second);
+  rebuildPairs();
+}
+}  // namespace vrrw_kinematics

@@ -1,0 +1,259 @@
+#include "vrrw_kinematics/state_checker.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+
+#include "vrrw_kinematics/kinematics_error.h"
+
+namespace vrrw_kinematics
+{
+namespace
+{
+bool aabbOverlap(const Eigen::Vector3d& ca, const Eigen::Vector3d& ha, const Eigen::Vector3d& cb,
+                 const Eigen::Vector3d& hb)
+{
+  return std::abs(ca.x() - cb.x()) <= ha.x() + hb.x() && std::abs(ca.y() - cb.y()) <= ha.y() + hb.y() &&
+         std::abs(ca.z() - cb.z()) <= ha.z() + hb.z();
+}
+
+bool sphereTouchesBox(const Eigen::Vector3d& center, double radius, const Eigen::Vector3d& box_center,
+                      const Eigen::Vector3d& box_half)
+{
+  const Eigen::Vector3d outside = ((center - box_center).cwiseAbs() - box_half).cwiseMax(0.0);
+  return outside.squaredNorm() <= radius * radius;
+}
+}  // namespace
+
+StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::string>& joints,
+                           const Eigen::VectorXd& variables)
+  : world_(world)
+{
+  const RobotModel& model = world.model();
+  if (static_cast<std::size_t>(variables.size()) != model.variableCount())
+    throw KinematicsError(ErrorCode::InvalidArgument, "state: expected " + std::to_string(model.variableCount()) +
+                                                          " joint values, got " + std::to_string(variables.size()));
+  for (const std::string& name : joints)
+  {
+    const int j = model.jointIndex(name);
+    if (model.joints()[j].variable < 0)
+      throw KinematicsError(ErrorCode::InvalidArgument, "joint " + name + ": fixed or mimic, cannot be planned");
+    group_.push_back(j);
+    joint_names_.push_back(name);
+  }
+  std::vector<Eigen::Isometry3d> link_poses;
+  model.linkTransforms(variables, link_poses);
+
+  // anchor_of[l]: the group joint whose child frame link l hangs from rigidly, -1 when it does not move.
+  std::vector<int> anchor_of(model.links().size(), -1);
+  for (std::size_t l = 1; l < model.links().size(); ++l)
+  {
+    const LinkModel& link = model.links()[l];
+    const auto it = std::find(group_.begin(), group_.end(), link.parent_joint);
+    if (it == group_.end())
+    {
+      anchor_of[l] = anchor_of[link.parent_link];
+      continue;
+    }
+    Anchor anchor;
+    anchor.joint = *it;
+    anchor.group_index = static_cast<int>(it - group_.begin());
+    anchor.parent = anchor_of[link.parent_link];
+    const Eigen::Isometry3d parent_pose =
+        anchor.parent >= 0 ? link_poses[model.joints()[anchors_[anchor.parent].joint].child_link]
+                           : Eigen::Isometry3d::Identity();
+    anchor.before = parent_pose.inverse() * link_poses[link.parent_link];
+    anchor_of[l] = static_cast<int>(anchors_.size());
+    anchors_.push_back(anchor);
+  }
+  anchor_poses_.resize(anchors_.size());
+  std::vector<Eigen::Isometry3d> anchor_at_start(anchors_.size());
+  for (std::size_t a = 0; a < anchors_.size(); ++a)
+    anchor_at_start[a] = link_poses[model.joints()[anchors_[a].joint].child_link];
+
+  const auto& elements = world.elements();
+  const auto& bodies = world.bodies();
+  static_poses_.resize(elements.size());
+  static_centers_.resize(elements.size());
+  static_halves_.resize(elements.size());
+  std::vector<int> slot_of(elements.size(), -1);
+  std::vector<int> moving_body_of(bodies.size(), -1);
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+  {
+    const CollisionBody& body = bodies[b];
+    const Eigen::Isometry3d body_pose = body.link >= 0 ? link_poses[body.link] * body.offset : body.offset;
+    const int anchor = body.link >= 0 ? anchor_of[body.link] : -1;
+    for (const int e : body.elements)
+    {
+      static_poses_[e] = body_pose * elements[e].local;
+      elementAabb(elements[e], static_poses_[e], static_centers_[e], static_halves_[e]);
+      if (anchor < 0)
+        continue;
+      slot_of[e] = static_cast<int>(moving_elements_.size());
+      moving_elements_.push_back(MovingElement{ e, anchor, anchor_at_start[anchor].inverse() * static_poses_[e] });
+    }
+    if (anchor < 0 || body.elements.empty())
+      continue;
+    MovingBody moving_body{ static_cast<int>(b), anchor, Eigen::Vector3d::Zero(), 0.0 };
+    for (const int e : body.elements)
+      moving_body.center += moving_elements_[slot_of[e]].offset.translation() / static_cast<double>(body.elements.size());
+    for (const int e : body.elements)
+      moving_body.radius = std::max(moving_body.radius, (moving_elements_[slot_of[e]].offset.translation() -
+                                                         moving_body.center).norm() + elements[e].bounding_radius);
+    moving_body_of[b] = static_cast<int>(moving_bodies_.size());
+    moving_bodies_.push_back(moving_body);
+  }
+  body_centers_.resize(bodies.size());
+  body_halves_.resize(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+  {
+    Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+    for (const int e : bodies[b].elements)
+    {
+      low = low.cwiseMin(static_centers_[e] - static_halves_[e]);
+      high = high.cwiseMax(static_centers_[e] + static_halves_[e]);
+    }
+    body_centers_[b] = 0.5 * (low + high);
+    body_halves_[b] = 0.5 * (high - low);
+  }
+
+  std::map<std::pair<int, int>, BodyPair> grouped;
+  for (const auto& pair : world.checkedPairs())
+  {
+    int first = pair.first, second = pair.second;
+    if (slot_of[first] < 0)
+      std::swap(first, second);
+    if (slot_of[first] < 0)
+      continue;
+    const int body_a = moving_body_of[elements[first].body];
+    const int body_b = elements[second].body;
+    const bool moving = slot_of[second] >= 0;
+    BodyPair& entry = grouped[{ body_a, moving ? moving_body_of[body_b] : -1 - body_b }];
+    entry.a = body_a;
+    entry.b = moving ? moving_body_of[body_b] : body_b;
+    entry.moving = moving;
+    entry.elements.emplace_back(slot_of[first], moving ? slot_of[second] : -1 - second);
+    ++pair_count_;
+  }
+  for (const bool moving : { false, true })
+    for (const auto& entry : grouped)
+      if (entry.second.moving == moving)
+        body_pairs_.push_back(entry.second);
+
+  sphere_centers_.resize(moving_bodies_.size());
+  element_poses_.resize(moving_elements_.size());
+  centers_.resize(moving_elements_.size());
+  halves_.resize(moving_elements_.size());
+  stamps_.assign(moving_elements_.size(), 0);
+  computeReach();
+}
+
+void StateChecker::computeReach()
+{
+  const RobotModel& model = world_.model();
+  const auto& elements = world_.elements();
+  const auto& bodies = world_.bodies();
+  reach_.assign(group_.size(), 0.0);
+  for (std::size_t g = 0; g < group_.size(); ++g)
+  {
+    const JointModel& joint = model.joints()[group_[g]];
+    if (joint.type == JointModel::Type::Prismatic)
+    {
+      reach_[g] = 1.0;
+      continue;
+    }
+    for (const MovingElement& moving : moving_elements_)
+    {
+      const CollisionBody& body = bodies[elements[moving.element].body];
+      if (!model.isDescendant(body.link, joint.child_link))
+        continue;
+      double bound = (body.offset * elements[moving.element].local).translation().norm() +
+                     elements[moving.element].bounding_radius;
+      for (int l = body.link; l != joint.child_link; l = model.links()[l].parent_link)
+      {
+        const JointModel& above = model.joints()[model.links()[l].parent_joint];
+        bound += above.origin.translation().norm();
+        if (above.type == JointModel::Type::Prismatic)
+          bound += std::max(std::abs(above.lower), std::abs(above.upper));
+      }
+      reach_[g] = std::max(reach_[g], bound);
+    }
+  }
+}
+
+const Eigen::Isometry3d& StateChecker::elementPose(int slot)
+{
+  if (stamps_[slot] != generation_)
+  {
+    const MovingElement& moving = moving_elements_[slot];
+    element_poses_[slot] = anchor_poses_[moving.anchor] * moving.offset;
+    elementAabb(world_.elements()[moving.element], element_poses_[slot], centers_[slot], halves_[slot]);
+    stamps_[slot] = generation_;
+  }
+  return element_poses_[slot];
+}
+
+template <bool kReport>
+bool StateChecker::collide(const Eigen::VectorXd& q, Contact* contact)
+{
+  const RobotModel& model = world_.model();
+  ++generation_;
+  for (std::size_t a = 0; a < anchors_.size(); ++a)
+  {
+    const Anchor& anchor = anchors_[a];
+    const Eigen::Isometry3d joint = model.joints()[anchor.joint].transform(q[anchor.group_index]);
+    anchor_poses_[a] = anchor.parent >= 0 ? anchor_poses_[anchor.parent] * anchor.before * joint : anchor.before * joint;
+  }
+  for (std::size_t b = 0; b < moving_bodies_.size(); ++b)
+    sphere_centers_[b] = anchor_poses_[moving_bodies_[b].anchor] * moving_bodies_[b].center;
+
+  const auto& elements = world_.elements();
+  for (const BodyPair& pair : body_pairs_)
+  {
+    const double radius = moving_bodies_[pair.a].radius;
+    if (pair.moving)
+    {
+      const double reach = radius + moving_bodies_[pair.b].radius;
+      if ((sphere_centers_[pair.a] - sphere_centers_[pair.b]).squaredNorm() > reach * reach)
+        continue;
+    }
+    else if (!sphereTouchesBox(sphere_centers_[pair.a], radius, body_centers_[pair.b], body_halves_[pair.b]))
+      continue;
+    for (const auto& element_pair : pair.elements)
+    {
+      const int slot_a = element_pair.first;
+      const Eigen::Isometry3d& pose_a = elementPose(slot_a);
+      const int slot_b = element_pair.second;
+      const bool b_moves = slot_b >= 0;
+      const int element_b = b_moves ? moving_elements_[slot_b].element : -1 - slot_b;
+      const Eigen::Isometry3d& pose_b = b_moves ? elementPose(slot_b) : static_poses_[element_b];
+      const Eigen::Vector3d& center_b = b_moves ? centers_[slot_b] : static_centers_[element_b];
+      const Eigen::Vector3d& half_b = b_moves ? halves_[slot_b] : static_halves_[element_b];
+      const int element_a = moving_elements_[slot_a].element;
+      if (!aabbOverlap(centers_[slot_a], halves_[slot_a], center_b, half_b) ||
+          !elementsCollide(elements[element_a], pose_a, elements[element_b], pose_b))
+        continue;
+      if (kReport)
+      {
+        contact->collision = true;
+        contact->body_a = world_.bodies()[elements[element_a].body].name;
+        contact->body_b = world_.bodies()[elements[element_b].body].name;
+      }
+      return true;
+    }
+  }
+  return false;
+}
+
+bool StateChecker::valid(const Eigen::VectorXd& q)
+{
+  return !collide<false>(q, nullptr);
+}
+
+Contact StateChecker::check(const Eigen::VectorXd& q)
+{
+  Contact contact;
+  collide<true>(q, &contact);
+  return contact;
+}
+}  // namespace vrrw_kinematics
