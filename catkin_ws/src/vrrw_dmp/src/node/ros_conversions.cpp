@@ -1,0 +1,119 @@
+#include "ros_conversions.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <sensor_msgs/JointState.h>
+
+namespace vrrw_dmp
+{
+vrrw_trajectory::JointTrajectory fromMessage(const trajectory_msgs::JointTrajectory& message)
+{
+  vrrw_trajectory::JointTrajectory trajectory;
+  trajectory.joint_names = message.joint_names;
+  for (const auto& in : message.points)
+  {
+    vrrw_trajectory::TrajectoryPoint point;
+    point.time = in.time_from_start.toSec();
+    point.positions = in.positions;
+    point.velocities = in.velocities;
+    point.accelerations = in.accelerations;
+    trajectory.points.push_back(std::move(point));
+  }
+  return trajectory;
+}
+
+trajectory_msgs::JointTrajectory toMessage(const vrrw_trajectory::JointTrajectory& trajectory)
+{
+  trajectory_msgs::JointTrajectory message;
+  message.joint_names = trajectory.joint_names;
+  message.points.reserve(trajectory.points.size());
+  for (const auto& in : trajectory.points)
+  {
+    trajectory_msgs::JointTrajectoryPoint point;
+    point.positions = in.positions;
+    point.velocities = in.velocities;
+    point.accelerations = in.accelerations;
+    point.time_from_start = ros::Duration(in.time);
+    message.points.push_back(std::move(point));
+  }
+  return message;
+}
+
+namespace
+{
+void appendJointState(const sensor_msgs::JointState& state, double time, std::vector<std::string>& names,
+                      vrrw_trajectory::JointTrajectory& trajectory, std::size_t& dropped)
+{
+  if (names.empty())
+    names = state.name;
+  vrrw_trajectory::TrajectoryPoint point;
+  point.time = time;
+  for (const auto& name : names)
+  {
+    const auto found = std::find(state.name.begin(), state.name.end(), name);
+    if (found == state.name.end())
+      return;  // a message of another publisher (e.g. a gripper) without this joint
+    const auto index = static_cast<std::size_t>(found - state.name.begin());
+    if (index >= state.position.size())
+      return;
+    point.positions.push_back(state.position[index]);
+    if (state.velocity.size() == state.name.size())
+      point.velocities.push_back(state.velocity[index]);
+  }
+  if (point.velocities.size() != point.positions.size())
+    point.velocities.clear();
+  if (!trajectory.points.empty() && !(time > trajectory.points.back().time))
+  {
+    ++dropped;
+    return;
+  }
+  trajectory.points.push_back(std::move(point));
+}
+}  // namespace
+
+vrrw_trajectory::JointTrajectory readBag(const std::string& path, const std::string& topic,
+                                         const std::vector<std::string>& joint_names, std::size_t& dropped)
+{
+  dropped = 0;
+  if (topic.empty())
+    throw std::runtime_error("bag " + path + ": no topic given");
+  rosbag::Bag bag;
+  try
+  {
+    bag.open(path, rosbag::bagmode::Read);
+  }
+  catch (const rosbag::BagException& e)
+  {
+    throw std::runtime_error("bag " + path + ": " + e.what());
+  }
+  rosbag::View view(bag, rosbag::TopicQuery(topic));
+  if (view.size() == 0)
+    throw std::runtime_error("bag " + path + ": no messages on topic '" + topic + "'");
+  vrrw_trajectory::JointTrajectory trajectory;
+  std::vector<std::string> names = joint_names;
+  for (const rosbag::MessageInstance& message : view)
+  {
+    if (const auto state = message.instantiate<sensor_msgs::JointState>())
+    {
+      const double time = state->header.stamp.isZero() ? message.getTime().toSec() : state->header.stamp.toSec();
+      appendJointState(*state, time, names, trajectory, dropped);
+    }
+    else if (const auto plan = message.instantiate<trajectory_msgs::JointTrajectory>())
+    {
+      return fromMessage(*plan);
+    }
+    else
+    {
+      throw std::runtime_error("bag " + path + ": topic '" + topic + "' has " + message.getDataType() +
+                               ", expected sensor_msgs/JointState or trajectory_msgs/JointTrajectory");
+    }
+  }
+  trajectory.joint_names = names;
+  if (trajectory.points.empty())
+    throw std::runtime_error("bag " + path + ": no message on '" + topic + "' has all the requested joints");
+  return trajectory;
+}
+}  // namespace vrrw_dmp
