@@ -67,7 +67,9 @@ void ArmActionServer::onGoal(GoalHandle gh)
   ros::Time start = goal->trajectory.header.stamp.isZero() ? now : goal->trajectory.header.stamp;
   if (!goal->trajectory.points.empty() && start + goal->trajectory.points.back().time_from_start < now)
     return reject(gh, Result::OLD_HEADER_TIMESTAMP,
-                  "trajectory ended " + std::to_string((now - start).toSec()) + " s ago (header.stamp in the past)");
+                  "trajectory ended " +
+                      std::to_string((now - start - goal->trajectory.points.back().time_from_start).toSec()) +
+                      " s ago (header.stamp in the past)");
   start = std::max(start, now);
   const Validation v = arm_.validate(fromMsg(goal->trajectory), toTime(now));
   if (!v.ok())
