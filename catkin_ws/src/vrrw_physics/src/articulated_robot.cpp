@@ -282,20 +282,24 @@ ArticulatedRobot::ArticulatedRobot(const urdf::ModelInterface& model, const std:
     colliders_.push_back(std::move(collider));
   }
 
+  response_.joint_of_dof.assign(std::size_t(body_->getNumDofs()), -1);
+  for (std::size_t j = 0; j < joints_.size(); ++j)
+    response_.joint_of_dof[std::size_t(body_->getLink(joints_[j].link).m_dofOffset)] = int(j);
   coupling_of_joint_.assign(joints_.size(), -1);
+  std::vector<JointRange> ranges;
   for (SimJoint& sim : joints_)
   {
     const urdf::JointConstSharedPtr joint = model.getJoint(sim.name);
     if (sim.limited)
-      limits_.push_back(std::make_unique<JointLimit>(body_.get(), sim.link, sim.lower, sim.upper));
+      ranges.push_back({ sim.link, sim.lower, sim.upper });
     if (joint->mimic)
     {
       const int master = jointIndex(joint->mimic->joint_name);
       if (master < 0)
         throw std::runtime_error("joint " + sim.name + ": mimics '" + joint->mimic->joint_name +
                                  "', not a movable joint of robot " + name);
-      auto coupling = std::make_unique<JointCoupling>(body_.get(), sim.link, joints_[master].link,
-                                                      joint->mimic->multiplier, joint->mimic->offset);
+      auto coupling = std::make_unique<JointCoupling>(body_.get(), sim.link, joints_[std::size_t(master)].link,
+                                                      joint->mimic->multiplier, joint->mimic->offset, &response_);
       coupling->setGains(1e7, 1e4);
       sim.mimic = master;
       sim.multiplier = joint->mimic->multiplier;
@@ -305,10 +309,12 @@ ArticulatedRobot::ArticulatedRobot(const urdf::ModelInterface& model, const std:
       continue;
     }
     sim.drive = int(drives_.size());
-    drives_.push_back(std::make_unique<JointDrive>(body_.get(), sim.link));
+    drives_.push_back(std::make_unique<JointDrive>(body_.get(), sim.link, &response_));
     if (sim.max_effort > 0.0)
       drives_.back()->setForceLimit(sim.max_effort);
   }
+  if (!ranges.empty())
+    limits_ = std::make_unique<JointLimits>(body_.get(), ranges, &response_);
   feed_forward_.assign(joints_.size(), 0.0);
   setState(std::vector<double>(joints_.size(), 0.0), std::vector<double>(joints_.size(), 0.0));
 }
@@ -322,8 +328,8 @@ ArticulatedRobot::~ArticulatedRobot()
   if (drive_constraints_)
     for (auto& d : drives_)
       world_->removeMultiBodyConstraint(d.get());
-  for (auto& l : limits_)
-    world_->removeMultiBodyConstraint(l.get());
+  if (limits_)
+    world_->removeMultiBodyConstraint(limits_.get());
   for (auto& c : colliders_)
     world_->removeCollisionObject(c.get());
   world_->removeMultiBody(body_.get());
@@ -344,8 +350,8 @@ void ArticulatedRobot::addToWorld(btMultiBodyDynamicsWorld* world, bool drive_co
                            : 0;
     world->addCollisionObject(c.get(), solid ? group : 0, mask);
   }
-  for (auto& l : limits_)
-    world->addMultiBodyConstraint(l.get());
+  if (limits_)
+    world->addMultiBodyConstraint(limits_.get());
   for (auto& c : couplings_)
     world->addMultiBodyConstraint(c.get());
   if (drive_constraints)
@@ -412,15 +418,29 @@ void ArticulatedRobot::setState(const std::vector<double>& positions, const std:
   btAlignedObjectArray<btVector3> origins;
   body_->forwardKinematics(rotations, origins);
   body_->updateCollisionObjectWorldTransforms(rotations, origins);
+  response_.invalidate();
+  refreshFrames();
 }
 
-Eigen::Isometry3d ArticulatedRobot::bodyPose(int body) const
+void ArticulatedRobot::refreshFrames()
 {
-  const btTransform& t = colliders_[std::size_t(body + 1)]->getWorldTransform();
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.translate(toEigen(t.getOrigin()));
-  pose.rotate(toEigen(t.getRotation()));
-  return pose;
+  poses_.resize(colliders_.size());
+  for (std::size_t i = 0; i < colliders_.size(); ++i)
+  {
+    const btTransform& t = colliders_[i]->getWorldTransform();
+    Eigen::Isometry3d& pose = poses_[i];
+    pose.setIdentity();
+    pose.translate(toEigen(t.getOrigin()));
+    pose.rotate(toEigen(t.getRotation()));
+  }
+}
+
+const Eigen::MatrixXd& ArticulatedRobot::updateDynamics()
+{
+  refreshFrames();
+  inertia_ = jointSpaceInertia(*this);
+  response_.setInertia(inertia_);
+  return inertia_;
 }
 
 const ArticulatedRobot::LinkFrame& ArticulatedRobot::linkFrame(const std::string& link) const

@@ -166,12 +166,13 @@ bool PhysicsWorld::step()
 {
   for (RobotEntry& e : robots_)
   {
+    const Eigen::MatrixXd& inertia = e.robot->updateDynamics();
     e.robot->clearFeedForward();
     if (e.gravity_compensation)
       e.robot->compensateGravity(options_.gravity);
     if (e.stable_pd)
     {
-      const std::vector<double> tau = e.stable_pd->torques(options_.dt);
+      const std::vector<double> tau = e.stable_pd->torques(options_.dt, inertia);
       for (std::size_t j = 0; j < tau.size(); ++j)
         if (tau[j] != 0.0)
           e.robot->addJointTorque(j, tau[j]);

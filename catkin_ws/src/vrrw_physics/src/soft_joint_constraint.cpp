@@ -1,4 +1,4 @@
-#include <vrrw_physics/joint_limit.h>
+#include <vrrw_physics/joint_limits.h>
 #include <vrrw_physics/soft_joint_constraint.h>
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
@@ -13,8 +13,9 @@ Softness implicitSpringDamper(double h, double stiffness, double damping)
 }
 
 SoftJointConstraint::SoftJointConstraint(btMultiBody* body, int link_a, double coeff_a, int link_b, double coeff_b,
-                                         int type)
+                                         int type, const JointSpaceResponse* response)
   : btMultiBodyConstraint(body, body, link_a, link_b < 0 ? link_a : link_b, 1, false, type)
+  , response_(response)
   , link_b_(link_b)
   , coeff_a_(coeff_a)
   , coeff_b_(coeff_b)
@@ -89,6 +90,14 @@ void SoftJointConstraint::createConstraintRows(btMultiBodyConstraintArray& rows,
   const double max_impulse = max_force_ * h;
 
   btMultiBodySolverConstraint& row = rows.expandNonInitializing();
+  row.m_orgConstraint = this;
+  row.m_orgDofIndex = 0;
+  if (response_ && response_->valid())
+  {
+    fillJointRow(row, data, m_bodyA, *response_, m_linkA, coeff_a_, link_b_, coeff_b_, goal_velocity, soft.cfm,
+                 -max_impulse, max_impulse);
+    return;
+  }
   const btVector3 zero(0, 0, 0);
   fillMultiBodyConstraint(row, data, jacobianA(0), jacobianB(0), zero, zero, zero, zero, 0, info,
                           btScalar(-max_impulse), btScalar(max_impulse), false, 1, false, btScalar(goal_velocity));

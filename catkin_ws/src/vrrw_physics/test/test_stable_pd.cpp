@@ -1,4 +1,5 @@
 #include <vrrw_physics/articulated_robot.h>
+#include <vrrw_physics/joint_space_inertia.h>
 #include <vrrw_physics/stable_pd.h>
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
@@ -25,15 +26,14 @@ urdf::ModelInterfaceSharedPtr model()
 }
 }  // namespace
 
-TEST(StablePd, InertiaOfThePendulumIsItsMomentAboutTheAxis)
+TEST(JointSpaceInertia, InertiaOfThePendulumIsItsMomentAboutTheAxis)
 {
   const auto urdf = model();
   ArticulatedRobot robot(*urdf, "p", "p_base_link");
-  StablePd pd(robot);
-  EXPECT_NEAR(pd.inertia()(0, 0), 0.51, 1e-9);
+  EXPECT_NEAR(jointSpaceInertia(robot)(0, 0), 0.51, 1e-9);
 }
 
-TEST(StablePd, InertiaMatchesBulletsResponseToJointImpulses)
+TEST(JointSpaceInertia, InertiaMatchesBulletsResponseToJointImpulses)
 {
   const auto urdf = model();
   btDefaultCollisionConfiguration config;
@@ -48,7 +48,7 @@ TEST(StablePd, InertiaMatchesBulletsResponseToJointImpulses)
     const std::vector<double> q0{ 0.4, -0.7, 0.1 };
     const double h = 1e-4;
     robot.setState(q0, { 0, 0, 0 });
-    const Eigen::MatrixXd m = StablePd(robot).inertia();
+    const Eigen::MatrixXd m = jointSpaceInertia(robot);
     for (std::size_t j = 0; j < 3; ++j)
     {
       robot.setState(q0, { 0, 0, 0 });
@@ -61,4 +61,19 @@ TEST(StablePd, InertiaMatchesBulletsResponseToJointImpulses)
       EXPECT_LT((m * acceleration - tau).norm(), 1e-3 * tau.norm()) << "joint " << j;
     }
   }
+}
+
+TEST(StablePd, ImplicitTorqueBringsTheJointToItsPredictedVelocity)
+{
+  const auto urdf = model();
+  ArticulatedRobot robot(*urdf, "p", "p_base_link");
+  robot.setState({ 0.0 }, { 0.2 });
+  robot.drives()[0]->setGains(1e5, 8e4);
+  robot.drives()[0]->setTarget(0.1, 0.0);
+  StablePd pd(robot);
+  const double h = 0.001;
+  const double tau = pd.torques(h, jointSpaceInertia(robot))[0];
+  // x = (I v + h (K e)) / (I + h (h K + D)); tau = K (e - h x) - D x.
+  const double x = (0.51 * 0.2 + h * 1e5 * 0.1) / (0.51 + h * (h * 1e5 + 8e4));
+  EXPECT_NEAR(tau, 1e5 * (0.1 - h * x) - 8e4 * x, 1e-4);  // Bullet stores the inertia in float
 }

@@ -1,6 +1,7 @@
 #pragma once
 #include <vrrw_physics/joint_drive.h>
-#include <vrrw_physics/joint_limit.h>
+#include <vrrw_physics/joint_limits.h>
+#include <vrrw_physics/joint_space_inertia.h>
 
 #include <Eigen/Geometry>
 #include <map>
@@ -46,7 +47,7 @@ struct SimJoint
 /// Links joined by fixed joints are merged (mass, inertia, collision shapes); every movable joint
 /// (revolute, continuous, prismatic) becomes a Bullet link whose frame sits at its centre of mass on
 /// the principal axes of inertia. Non-mimic joints get a JointDrive, mimic joints a JointCoupling,
-/// limited joints a JointLimit; every Bullet link gets a collider (links without
+/// limited joints share one JointLimits; every Bullet link gets a collider (links without
 /// collision geometry get one that collides with nothing, so its constraints are solved).
 /// Featherstone, "Rigid Body Dynamics Algorithms", 2008.
 class ArticulatedRobot
@@ -97,8 +98,14 @@ public:
   void compensateGravity(const Eigen::Vector3d& gravity);
   /// \brief Adds a joint torque for this step (reported by efforts()).
   void addJointTorque(std::size_t joint, double torque);
-  /// \brief World pose of a Bullet link frame (COM, principal axes); -1 for the base.
-  Eigen::Isometry3d bodyPose(int body) const;
+  /// \brief World pose of a Bullet link frame (COM, principal axes); -1 for the base
+  /// (as of the last refreshFrames()).
+  const Eigen::Isometry3d& bodyPose(int body) const { return poses_[std::size_t(body + 1)]; }
+  /// \brief Re-reads link frames from Bullet (after a step); setState() does it too.
+  void refreshFrames();
+  /// \brief refreshFrames(), then the joint-space inertia M of the configuration, whose inverse
+  /// the robot's solver rows use this step. Returns M.
+  const Eigen::MatrixXd& updateDynamics();
   /// \brief Forgets the feed-forward torques reported by efforts() (Bullet clears applied torques each step).
   void clearFeedForward();
 
@@ -118,11 +125,14 @@ private:
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
   std::vector<std::unique_ptr<JointDrive>> drives_;
   std::vector<std::unique_ptr<JointCoupling>> couplings_;
-  std::vector<std::unique_ptr<JointLimit>> limits_;
+  std::unique_ptr<JointLimits> limits_;
   std::vector<SimJoint> joints_;
   std::vector<double> feed_forward_;
   std::vector<int> coupling_of_joint_;
   std::map<std::string, LinkFrame> links_;
+  std::vector<Eigen::Isometry3d> poses_;
+  Eigen::MatrixXd inertia_;
+  JointSpaceResponse response_;
   btMultiBodyDynamicsWorld* world_ = nullptr;
   bool drive_constraints_ = true;
 };

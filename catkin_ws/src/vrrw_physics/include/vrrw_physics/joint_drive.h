@@ -9,13 +9,14 @@ class JointDrive : public SoftJointConstraint
 {
 public:
   /// \brief Drive of the 1-dof joint whose child is Bullet link `link` of `body`.
-  JointDrive(btMultiBody* body, int link);
+  JointDrive(btMultiBody* body, int link, const JointSpaceResponse* response = nullptr);
 };
 
 /// \brief Mimic joint of a URDF: keeps q_mimic = multiplier * q_master + offset (stiff, implicit).
 class JointCoupling : public SoftJointConstraint
 {
 public:
-  JointCoupling(btMultiBody* body, int mimic_link, int master_link, double multiplier, double offset);
+  JointCoupling(btMultiBody* body, int mimic_link, int master_link, double multiplier, double offset,
+                const JointSpaceResponse* response = nullptr);
 };
 }  // namespace vrrw_physics

@@ -1,5 +1,6 @@
 #pragma once
 #include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
+#include <vrrw_physics/joint_space_inertia.h>
 
 namespace vrrw_physics
 {
@@ -30,8 +31,10 @@ Softness implicitSpringDamper(double h, double stiffness, double damping);
 class SoftJointConstraint : public btMultiBodyConstraint
 {
 public:
-  /// \brief body: the robot; links and coefficients: up to two 1-dof joints and their weights.
-  SoftJointConstraint(btMultiBody* body, int link_a, double coeff_a, int link_b, double coeff_b, int type);
+  /// \brief body: the robot; links and coefficients: up to two 1-dof joints and their weights;
+  /// response: the robot's M^-1 for the step (may be null: Bullet computes the row's response).
+  SoftJointConstraint(btMultiBody* body, int link_a, double coeff_a, int link_b, double coeff_b, int type,
+                      const JointSpaceResponse* response);
 
   void finalizeMultiDof() override;
   int getIslandIdA() const override;
@@ -58,6 +61,7 @@ public:
   double velocity() const;
 
 private:
+  const JointSpaceResponse* response_;
   int link_b_;
   double coeff_a_;
   double coeff_b_;

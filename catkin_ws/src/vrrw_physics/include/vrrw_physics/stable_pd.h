@@ -19,10 +19,9 @@ class StablePd
 public:
   explicit StablePd(const ArticulatedRobot& robot);
 
-  /// \brief Joint-space inertia of every movable joint (order of ArticulatedRobot::joints()).
-  Eigen::MatrixXd inertia() const;
-  /// \brief Drive torque per joint (0 for mimic joints) for a step of h seconds.
-  std::vector<double> torques(double h) const;
+  /// \brief Drive torque per joint (0 for mimic joints) for a step of h seconds, given the
+  /// joint-space inertia M of the current configuration (jointSpaceInertia()).
+  std::vector<double> torques(double h, const Eigen::MatrixXd& inertia) const;
 
 private:
   const ArticulatedRobot& robot_;

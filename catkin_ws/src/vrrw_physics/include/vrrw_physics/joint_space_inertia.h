@@ -1,0 +1,46 @@
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+class btMultiBody;
+struct btMultiBodyJacobianData;
+struct btMultiBodySolverConstraint;
+
+namespace vrrw_physics
+{
+class ArticulatedRobot;
+
+/// \brief Joint-space inertia M of a fixed-base robot (order of ArticulatedRobot::joints()) by the
+/// composite rigid body algorithm on its current link frames. Featherstone, "Rigid Body Dynamics
+/// Algorithms", 2008, ch. 6.
+Eigen::MatrixXd jointSpaceInertia(const ArticulatedRobot& robot);
+
+/// \brief M^-1 of one robot for the current step, so solver rows on joint coordinates need no
+/// articulated-body pass each (Bullet's fillMultiBodyConstraint does two per row).
+class JointSpaceResponse
+{
+public:
+  /// \brief M of the current configuration; its inverse is computed on first use.
+  void setInertia(const Eigen::MatrixXd& inertia);
+  void invalidate() { valid_ = false; }
+  /// \brief false: rows fall back to Bullet's own fill.
+  bool valid() const { return valid_; }
+  const Eigen::MatrixXd& inverse() const;
+
+  std::vector<int> joint_of_dof;  ///< Bullet dof index -> joint index
+
+private:
+  const Eigen::MatrixXd* inertia_ = nullptr;
+  mutable Eigen::MatrixXd inverse_;
+  mutable bool inverted_ = false;
+  bool valid_ = false;
+};
+
+/// \brief Fills one solver row acting on up to two joint coordinates of `body` (coefficients on
+/// Bullet links link_a / link_b, link_b < 0 for none): the row drives the coordinate rate to
+/// `goal_velocity` with softness `cfm` (0: hard) inside [lower, upper] impulse bounds.
+/// Returns the current rate of the coordinate.
+double fillJointRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& data, btMultiBody* body,
+                    const JointSpaceResponse& response, int link_a, double coeff_a, int link_b, double coeff_b,
+                    double goal_velocity, double cfm, double lower, double upper);
+}  // namespace vrrw_physics

@@ -1,0 +1,170 @@
+#include <vrrw_physics/articulated_robot.h>
+#include <vrrw_physics/joint_space_inertia.h>
+
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodySolverConstraint.h>
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+
+namespace vrrw_physics
+{
+namespace
+{
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v)
+{
+  Eigen::Matrix3d s;
+  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return s;
+}
+
+Eigen::Vector3d toEigen(const btVector3& v)
+{
+  return Eigen::Vector3d(v.x(), v.y(), v.z());
+}
+}  // namespace
+
+Eigen::MatrixXd jointSpaceInertia(const ArticulatedRobot& robot)
+{
+  const btMultiBody& body = *robot.body();
+  const std::size_t n_links = static_cast<std::size_t>(body.getNumLinks());
+  std::vector<Matrix6d> composite(n_links);
+  std::vector<Vector6d> motion(n_links);
+  for (std::size_t k = 0; k < n_links; ++k)
+  {
+    const int link = int(k);
+    const Eigen::Isometry3d& pose = robot.bodyPose(link);
+    const Eigen::Matrix3d r = pose.rotation();
+    const Eigen::Vector3d c = pose.translation();
+    const double m = body.getLinkMass(link);
+    const Eigen::Matrix3d cx = skew(c);
+    Matrix6d& inertia = composite[k];
+    inertia.topLeftCorner<3, 3>() = r * toEigen(body.getLinkInertia(link)).asDiagonal() * r.transpose() - m * cx * cx;
+    inertia.topRightCorner<3, 3>() = m * cx;
+    inertia.bottomLeftCorner<3, 3>() = -m * cx;
+    inertia.bottomRightCorner<3, 3>() = m * Eigen::Matrix3d::Identity();
+    const btMultibodyLink& joint = body.getLink(link);
+    if (joint.m_jointType == btMultibodyLink::ePrismatic)
+      motion[k] << Eigen::Vector3d::Zero(), r * toEigen(joint.getAxisBottom(0));
+    else
+    {
+      const Eigen::Vector3d axis = r * toEigen(joint.getAxisTop(0));
+      const Eigen::Vector3d pivot = c - r * toEigen(joint.m_dVector);
+      motion[k] << axis, pivot.cross(axis);
+    }
+  }
+  for (std::size_t k = n_links; k-- > 0;)
+  {
+    const int parent = body.getParent(int(k));
+    if (parent >= 0)
+      composite[std::size_t(parent)] += composite[k];
+  }
+  const auto& joints = robot.joints();
+  std::vector<int> joint_of_link(n_links, -1);
+  for (std::size_t j = 0; j < joints.size(); ++j)
+    joint_of_link[std::size_t(joints[j].link)] = int(j);
+  const Eigen::Index n = Eigen::Index(joints.size());
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
+  for (std::size_t k = 0; k < n_links; ++k)
+  {
+    const int j = joint_of_link[k];
+    if (j < 0)
+      continue;
+    const Vector6d force = composite[k] * motion[k];
+    for (int a = int(k); a >= 0; a = body.getParent(a))
+    {
+      const int i = joint_of_link[std::size_t(a)];
+      if (i < 0)
+        continue;
+      const double value = motion[std::size_t(a)].dot(force);
+      m(i, j) = value;
+      m(j, i) = value;
+    }
+  }
+  return m;
+}
+
+void JointSpaceResponse::setInertia(const Eigen::MatrixXd& inertia)
+{
+  inertia_ = &inertia;
+  inverted_ = false;
+  valid_ = inertia.allFinite();
+}
+
+const Eigen::MatrixXd& JointSpaceResponse::inverse() const
+{
+  if (!inverted_)
+  {
+    inverse_ = inertia_->ldlt().solve(Eigen::MatrixXd::Identity(inertia_->rows(), inertia_->cols()));
+    inverted_ = true;
+  }
+  return inverse_;
+}
+
+double fillJointRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& data, btMultiBody* body,
+                    const JointSpaceResponse& response, int link_a, double coeff_a, int link_b, double coeff_b,
+                    double goal_velocity, double cfm, double lower, double upper)
+{
+  const int size = body->getNumDofs() + 6;
+  row.m_multiBodyA = body;
+  row.m_multiBodyB = nullptr;
+  row.m_linkA = link_a;
+  row.m_linkB = -1;
+  row.m_solverBodyIdA = -1;
+  row.m_solverBodyIdB = -1;
+  row.m_deltaVelAindex = body->getCompanionId();
+  if (row.m_deltaVelAindex < 0)
+  {
+    row.m_deltaVelAindex = data.m_deltaVelocities.size();
+    body->setCompanionId(row.m_deltaVelAindex);
+    data.m_deltaVelocities.resize(data.m_deltaVelocities.size() + size);
+  }
+  row.m_jacAindex = data.m_jacobians.size();
+  data.m_jacobians.resize(data.m_jacobians.size() + size);
+  data.m_deltaVelocitiesUnitImpulse.resize(data.m_deltaVelocitiesUnitImpulse.size() + size);
+  btScalar* jacobian = &data.m_jacobians[row.m_jacAindex];
+  btScalar* delta = &data.m_deltaVelocitiesUnitImpulse[row.m_jacAindex];
+  for (int i = 0; i < size; ++i)
+    jacobian[i] = delta[i] = 0;
+  const int dof_a = body->getLink(link_a).m_dofOffset;
+  const int dof_b = link_b >= 0 ? body->getLink(link_b).m_dofOffset : -1;
+  jacobian[6 + dof_a] = btScalar(coeff_a);
+  if (dof_b >= 0)
+    jacobian[6 + dof_b] += btScalar(coeff_b);
+  const int ja = response.joint_of_dof[std::size_t(dof_a)];
+  const int jb = dof_b >= 0 ? response.joint_of_dof[std::size_t(dof_b)] : -1;
+  const Eigen::MatrixXd& inverse = response.inverse();
+  double denominator = 0.0;
+  for (int d = 0; d < size - 6; ++d)
+  {
+    const int j = response.joint_of_dof[std::size_t(d)];
+    double value = coeff_a * inverse(j, ja);
+    if (jb >= 0)
+      value += coeff_b * inverse(j, jb);
+    delta[6 + d] = btScalar(value);
+    denominator += double(jacobian[6 + d]) * value;
+  }
+  const btScalar* velocity = body->getVelocityVector();
+  double rate = coeff_a * velocity[6 + dof_a];
+  if (dof_b >= 0)
+    rate += coeff_b * velocity[6 + dof_b];
+  const double w = denominator > 1e-12 ? 1.0 / (denominator + cfm) : 0.0;
+  const btVector3 zero(0, 0, 0);
+  row.m_contactNormal1 = row.m_contactNormal2 = zero;
+  row.m_relpos1CrossNormal = row.m_relpos2CrossNormal = zero;
+  row.m_angularComponentA = row.m_angularComponentB = zero;
+  row.m_friction = 0;
+  row.m_appliedImpulse = 0;
+  row.m_appliedPushImpulse = 0;
+  row.m_jacDiagABInv = btScalar(w);
+  row.m_rhs = btScalar((goal_velocity - rate) * w);
+  row.m_rhsPenetration = 0;
+  row.m_cfm = btScalar(cfm * w);
+  row.m_lowerLimit = btScalar(lower);
+  row.m_upperLimit = btScalar(upper);
+  return rate;
+}
+}  // namespace vrrw_physics
