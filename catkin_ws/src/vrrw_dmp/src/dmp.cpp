@@ -75,10 +75,11 @@ void checkDemo(const vrrw_trajectory::JointTrajectory& demo)
   }
 }
 
-void checkVector(const std::vector<double>& values, std::size_t n, const std::string& what)
+void checkVector(const std::vector<double>& values, std::size_t n, const std::string& what,
+                 const std::string& per = "joints")
 {
   if (values.size() != n)
-    throw DmpError(what + ": " + std::to_string(values.size()) + " values for " + std::to_string(n) + " joints");
+    throw DmpError(what + ": " + std::to_string(values.size()) + " values for " + std::to_string(n) + " " + per);
   for (std::size_t j = 0; j < n; ++j)
     if (!std::isfinite(values[j]))
       throw DmpError(what + ": value " + std::to_string(j + 1) + " is not finite");
@@ -112,13 +113,13 @@ Dmp::Dmp(std::vector<std::string> joint_names, DmpParameters parameters, Gaussia
   checkVector(demo_start_, n, "model: demo start");
   checkVector(demo_goal_, n, "model: demo goal");
   checkVector(demo_amplitude_, n, "model: demo amplitude");
-  checkVector(basis_.centers(), basis_.size(), "model: basis centres");
-  checkVector(basis_.widths(), basis_.size(), "model: basis widths");
+  checkVector(basis_.centers(), basis_.size(), "model: basis centres", "basis functions");
+  checkVector(basis_.widths(), basis_.size(), "model: basis widths", "basis functions");
   if (weights_.size() != n || joint_scaling_.size() != n)
     throw DmpError("model: weights or scaling not given for each of the " + std::to_string(n) + " joints");
   for (std::size_t j = 0; j < n; ++j)
   {
-    checkVector(weights_[j], basis_.size(), "model: weights of joint '" + joint_names_[j] + "'");
+    checkVector(weights_[j], basis_.size(), "model: weights of joint '" + joint_names_[j] + "'", "basis functions");
     if (joint_scaling_[j] == AmplitudeScaling::automatic)
       throw DmpError("model: joint '" + joint_names_[j] + "' scaling must be goal or amplitude");
   }
