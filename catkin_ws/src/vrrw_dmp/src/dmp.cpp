@@ -284,15 +284,16 @@ void Dmp::forcingAt(double s, double* psi, double* forcing) const
 
 void Dmp::step(DmpState& state, double dt) const
 {
-  const double longest = kMaxSubstep * state.tau / static_cast<double>(std::max<std::size_t>(basis_.size(), 2) - 1);
-  const auto substeps = static_cast<std::size_t>(std::ceil(dt / longest));
-  const double h = dt / static_cast<double>(substeps);
-  if (state.transition.h() != h || state.transition.tau() != state.tau)
+  if (dt != state.step_dt || state.transition.tau() != state.tau)
   {
+    const double spacing = state.tau / static_cast<double>(std::max<std::size_t>(basis_.size(), 2) - 1);
+    state.step_dt = dt;
+    state.substeps = static_cast<std::size_t>(std::ceil(dt / (kMaxSubstep * spacing)));
+    const double h = dt / static_cast<double>(state.substeps);
     state.transition.prepare(parameters_.K, parameters_.damping(), state.tau, h);
     state.phase_decay = std::exp(-parameters_.alpha * h / state.tau);
   }
-  for (std::size_t i = 0; i < substeps; ++i)
+  for (std::size_t i = 0; i < state.substeps; ++i)
     integrate(state);
   state.time += dt;
 }

@@ -35,8 +35,10 @@ struct DmpState
   std::vector<double> forcing;          ///< f(s) at the current phase, per joint
   std::vector<double> forcing_end;      ///< scratch: f at the end of the step
   std::vector<double> psi;              ///< scratch: basis values
-  SpringDamperStep transition;          ///< cached for the last step length
-  double phase_decay = 1.0;             ///< exp(-alpha h / tau) for that step
+  double step_dt = 0.0;                 ///< the last dt given to step(), and for it:
+  std::size_t substeps = 1;             ///< internal steps of length h
+  SpringDamperStep transition;          ///< the exact step over h
+  double phase_decay = 1.0;             ///< exp(-alpha h / tau)
 };
 
 /// \brief A new start, goal and speed for a rollout; empty vectors and tau <= 0 mean "as demonstrated".
