@@ -16,6 +16,11 @@ ArmController::ArmController(RobotHardware& hardware, const std::vector<std::str
     if (index_.back() < 0)
       throw std::invalid_argument("arm joint " + j + ": not a joint of the robot hardware");
   }
+  holdCommand();
+}
+
+void ArmController::holdCommand()
+{
   hold_ = JointSample(joints_.size());
   for (size_t j = 0; j < joints_.size(); ++j)
     hold_.positions[j] = hw_.command().positions[index_[j]];
@@ -130,6 +135,9 @@ void ArmController::checkTolerances(double t, Cycle& cycle)
 ArmController::Cycle ArmController::update(double time)
 {
   Cycle cycle;
+  if (!started_)
+    holdCommand();
+  started_ = true;
   if (stopping_ && !motion_ && time >= stopping_->endTime())
   {
     hold_ = stopping_->sample(stopping_->endTime());

@@ -57,6 +57,9 @@ void GripperController::stop(double now)
 GripperController::Cycle GripperController::update(double time)
 {
   Cycle c;
+  if (!started_)
+    hold_ = hw_.command().positions[index_];
+  started_ = true;
   const double commanded = motion_ ? motion_->sample(time - start_time_).positions[0] : hold_;
   hw_.command().positions[index_] = commanded;
   hw_.command().velocities[index_] = motion_ ? motion_->sample(time - start_time_).velocities[0] : 0.0;

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Stand-in for the physics node in tests: each joint is a stiff second-order drive toward its
-target (q'' = K (q* - q) + D (qd* - qd)), an optional constant sag per joint, and an optional
-object that blocks the finger joint. Subscribes drive_targets, publishes joint_states."""
+target (q'' = K (q* - q) + D (qd* - qd)) from an initial pose, an optional constant sag per joint,
+and optional upper stops per joint (objects in the way). Subscribes drive_targets, publishes joint_states."""
 import rospy
 from sensor_msgs.msg import JointState
 
@@ -13,9 +13,10 @@ def main():
     sag = rospy.get_param("~sag", {})
     block = rospy.get_param("~block", {})
     rate_hz = rospy.get_param("~rate", 250.0)
-    q = {j: 0.0 for j in joints}
+    initial = rospy.get_param("~initial", {})
+    q = {j: initial.get(j, 0.0) for j in joints}
     v = {j: 0.0 for j in joints}
-    target = {j: (0.0, 0.0) for j in joints}
+    target = {j: (q[j], 0.0) for j in joints}
 
     def on_targets(msg):
         for i, name in enumerate(msg.name):

@@ -76,6 +76,17 @@ TEST(ArmController, FakeRobotFollowsTheInterpolantExactly)
   EXPECT_FALSE(arm.moving());
 }
 
+TEST(ArmController, HoldsTheFirstMeasuredStateOfALateHardware)
+{
+  const std::vector<std::string> names = { "r_a", "r_b" };
+  FakeRobot robot(names);
+  ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), { 4.0, 4.0 });
+  robot.reset({ 0.7, -1.2 });  // a physics robot reports its state only after construction
+  const auto c = arm.update(0.0);
+  EXPECT_EQ(c.desired.positions, (std::vector<double>{ 0.7, -1.2 }));
+  EXPECT_EQ(robot.command().positions, (std::vector<double>{ 0.7, -1.2 }));
+}
+
 TEST(ArmController, PathAndGoalTolerancesAbort)
 {
   const std::vector<std::string> names = { "r_a" };

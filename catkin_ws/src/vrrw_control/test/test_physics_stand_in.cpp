@@ -35,6 +35,14 @@ control_msgs::JointTolerance tolerance(const std::string& joint, double position
 }
 }  // namespace
 
+TEST(PhysicsStandIn, HoldsTheInitialPoseOfThePhysicsRobot)
+{
+  ros::Duration(0.3).sleep();
+  const auto q = armNow();
+  EXPECT_NEAR(q[1], -1.2, 1e-3);
+  EXPECT_NEAR(q[2], 1.0, 1e-3);
+}
+
 TEST(PhysicsStandIn, TracksAndSucceeds)
 {
   double max_error = 0.0;

@@ -39,7 +39,8 @@ public:
   /// \brief Ends the goal and stops with bounded deceleration from the desired state at `now`.
   void stop(double now);
 
-  /// \brief One control cycle; call between hardware.read() and hardware.write().
+  /// \brief One control cycle; call between hardware.read() and hardware.write(). The first cycle
+  /// holds whatever the hardware commands then (a physics robot's first measured state).
   Cycle update(double time);
 
   /// \brief True while a goal or a stop runs.
@@ -51,6 +52,7 @@ private:
   JointSample desiredAt(double time) const;
   JointSample actual() const;
   void checkTolerances(double t, Cycle& cycle);
+  void holdCommand();
   void endGoal(Outcome outcome, const std::string& message, double time, Cycle& cycle);
 
   RobotHardware& hw_;
@@ -64,5 +66,6 @@ private:
   double motion_start_ = 0.0;
   Tolerances tolerances_;
   JointSample hold_;  ///< rest state when nothing runs
+  bool started_ = false;
 };
 }  // namespace vrrw_control

@@ -37,6 +37,7 @@ public:
   std::string check(double position) const;
   void start(double position, double now);
   void stop(double now);
+  /// \brief One control cycle; the first holds whatever the hardware commands then.
   Cycle update(double time);
 
   const std::string& joint() const { return joint_; }
@@ -50,5 +51,6 @@ private:
   double start_time_ = 0.0, target_ = 0.0, hold_ = 0.0;
   double last_position_ = 0.0, last_time_ = 0.0, still_since_ = -1.0;
   bool active_ = false;
+  bool started_ = false;
 };
 }  // namespace vrrw_control
