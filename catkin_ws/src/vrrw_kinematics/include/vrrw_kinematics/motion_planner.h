@@ -1,0 +1,98 @@
+#pragma once
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vrrw_kinematics/ik_options.h"
+#include "vrrw_kinematics/ik_solver.h"
+#include "vrrw_kinematics/state_checker.h"
+
+namespace ompl
+{
+namespace base
+{
+class SpaceInformation;
+}
+}  // namespace ompl
+
+namespace vrrw_kinematics
+{
+/// \brief A planning query for one joint group.
+struct PlanRequest
+{
+  Eigen::VectorXd start;
+  std::optional<Eigen::VectorXd> goal_joints;
+  std::optional<Eigen::Isometry3d> goal_pose;  ///< of the planner's tip link, in the world (root) frame
+  std::string planner = "RRTConnect";
+  double time_limit = 1.0;  ///< s, IK goal sampling included
+  bool simplify = true;
+  std::uint64_t seed = 1;
+  IkOptions ik;
+};
+
+/// \brief A collision-free joint path, or why there is none.
+struct PlanResult
+{
+  bool success = false;
+  ErrorCode code = ErrorCode::PlanningFailed;
+  std::string message;
+  std::vector<Eigen::VectorXd> path;  ///< waypoints, start first
+  double planning_time = 0.0;         ///< s
+  double path_length = 0.0;           ///< joint-space length (rad, m)
+};
+
+/// \brief Geometric motion planning for one joint group with OMPL, the other robots and objects frozen.
+///
+/// Motions are checked at a resolution such that no point of a moving body travels more than
+/// `resolution` metres between two checked states (per-joint reach bounds, see StateChecker::reach()).
+class MotionPlanner
+{
+public:
+  /// \brief `joints` of world.model(); `tip_link` for pose goals; `world_state` fixes every other joint.
+  MotionPlanner(const CollisionWorld& world, const std::vector<std::string>& joints, const std::string& tip_link,
+                const Eigen::VectorXd& world_state, double resolution = 0.01);
+  ~MotionPlanner();
+
+  PlanResult plan(const PlanRequest& request);
+
+  std::size_t size() const { return lower_.size(); }
+  const Eigen::VectorXd& lowerLimits() const { return lower_; }
+  const Eigen::VectorXd& upperLimits() const { return upper_; }
+  const IkSolver& ik() const { return *ik_; }
+  /// \brief Pose of the chain base in the world, for pose goals.
+  const Eigen::Isometry3d& chainBasePose() const { return chain_base_pose_; }
+  /// \brief Collision state of the group at q (limits not checked).
+  Contact check(const Eigen::VectorXd& q) { return checker_.check(q); }
+  bool stateValid(const Eigen::VectorXd& q);
+  /// \brief Number of steps the straight segment a-b is checked in.
+  std::size_t segmentSteps(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
+  /// \brief Checks every step of the straight segment a-b (b included, a not); `valid_fraction` is the
+  /// fraction of the segment known valid when it fails.
+  bool segmentValid(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double* valid_fraction = nullptr);
+  /// \brief True when every segment of `path` is valid.
+  bool pathValid(const std::vector<Eigen::VectorXd>& path);
+
+private:
+  PlanResult fail(ErrorCode code, const std::string& message) const;
+  std::string limitViolation(const Eigen::VectorXd& q) const;
+  bool goalStates(const PlanRequest& request, double budget, std::vector<Eigen::VectorXd>& goals, PlanResult& error);
+
+  StateChecker checker_;
+  std::vector<std::string> joint_names_;
+  Eigen::VectorXd lower_;
+  Eigen::VectorXd upper_;
+  std::vector<double> reach_;
+  double resolution_;
+  std::unique_ptr<IkSolver> ik_;
+  Eigen::Isometry3d chain_base_pose_ = Eigen::Isometry3d::Identity();
+  std::shared_ptr<ompl::base::SpaceInformation> si_;
+  std::uint64_t sampler_seed_ = 1;
+};
+
+/// \brief Joint-space length of a path.
+double pathLength(const std::vector<Eigen::VectorXd>& path);
+}  // namespace vrrw_kinematics

@@ -1,0 +1,42 @@
+#pragma once
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+#include <vrrw_trajectory/joint_trajectory.h>
+
+namespace vrrw_kinematics
+{
+/// \brief Limits and sampling of a time parameterization.
+struct TimingOptions
+{
+  std::vector<double> max_velocity;      ///< per joint (rad/s, m/s), from the URDF
+  std::vector<double> max_acceleration;  ///< per joint, from urdf/config/<model>.yaml
+  double max_deviation = 0.02;  ///< how far (joint space) the blend at a waypoint may cut the corner; 0: stop there
+  double sample_period = 0.01;  ///< s between trajectory points
+  double path_step = 1e-3;      ///< arc-length grid of the phase-plane integration
+  double safety = 0.98;         ///< fraction of the limits the integration aims at
+};
+
+/// \brief Time-optimal time parameterization of a waypoint path (T. Kunz and M. Stilman, "Time-Optimal
+/// Trajectory Generation for Path Following with Bounded Acceleration and Velocity", RSS 2012).
+///
+/// Corners get circular blends (at most max_deviation from the waypoint); the maximum path velocity
+/// under joint velocity and acceleration limits is integrated forward and backward on an arc-length
+/// grid. The trajectory starts and ends at rest with strictly increasing times.
+class TimeParameterization
+{
+public:
+  explicit TimeParameterization(const TimingOptions& options);
+  /// \brief Throws KinematicsError(InvalidArgument) for bad limits or a path of the wrong width.
+  vrrw_trajectory::JointTrajectory compute(const std::vector<Eigen::VectorXd>& path,
+                                           const std::vector<std::string>& joint_names) const;
+
+private:
+  TimingOptions options_;
+};
+
+/// \brief Acceleration limits of `joint_names` from a urdf/config/<model>.yaml file; joint names there are
+/// unprefixed, so `prefix` is stripped first. Throws KinematicsError(InvalidArgument) naming file and joint.
+std::vector<double> loadAccelerationLimits(const std::string& yaml_path, const std::vector<std::string>& joint_names,
+                                           const std::string& prefix);
+}  // namespace vrrw_kinematics

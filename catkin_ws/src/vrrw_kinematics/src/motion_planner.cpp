@@ -1,0 +1,392 @@
+#include "vrrw_kinematics/motion_planner.h"
+
+#include <ompl/base/MotionValidator.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/StateSampler.h>
+#include <ompl/base/goals/GoalStates.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/PathSimplifier.h>
+#include <ompl/util/Console.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <random>
+
+#include "vrrw_kinematics/kinematics_error.h"
+#include "vrrw_kinematics/planner_factory.h"
+
+namespace vrrw_kinematics
+{
+namespace
+{
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+using Clock = std::chrono::steady_clock;
+
+Eigen::VectorXd toEigen(const ob::State* state, std::size_t n)
+{
+  const double* values = state->as<ob::RealVectorStateSpace::StateType>()->values;
+  return Eigen::Map<const Eigen::VectorXd>(values, static_cast<Eigen::Index>(n));
+}
+
+void fromEigen(const Eigen::VectorXd& q, ob::State* state)
+{
+  double* values = state->as<ob::RealVectorStateSpace::StateType>()->values;
+  for (Eigen::Index i = 0; i < q.size(); ++i)
+    values[i] = q[i];
+}
+
+double seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+/// Uniform sampling from its own seeded generator, so a seeded query repeats.
+class SeededSampler : public ob::StateSampler
+{
+public:
+  SeededSampler(const ob::StateSpace* space, std::uint64_t seed) : ob::StateSampler(space), engine_(seed) {}
+
+  void sampleUniform(ob::State* state) override
+  {
+    const auto& bounds = space_->as<ob::RealVectorStateSpace>()->getBounds();
+    double* values = state->as<ob::RealVectorStateSpace::StateType>()->values;
+    for (std::size_t i = 0; i < bounds.low.size(); ++i)
+      values[i] = std::uniform_real_distribution<double>(bounds.low[i], bounds.high[i])(engine_);
+  }
+
+  void sampleUniformNear(ob::State* state, const ob::State* near, double distance) override
+  {
+    const auto& bounds = space_->as<ob::RealVectorStateSpace>()->getBounds();
+    double* values = state->as<ob::RealVectorStateSpace::StateType>()->values;
+    const double* center = near->as<ob::RealVectorStateSpace::StateType>()->values;
+    for (std::size_t i = 0; i < bounds.low.size(); ++i)
+      values[i] = std::uniform_real_distribution<double>(std::max(bounds.low[i], center[i] - distance),
+                                                         std::min(bounds.high[i], center[i] + distance))(engine_);
+  }
+
+  void sampleGaussian(ob::State* state, const ob::State* mean, double stdDev) override
+  {
+    const auto& bounds = space_->as<ob::RealVectorStateSpace>()->getBounds();
+    double* values = state->as<ob::RealVectorStateSpace::StateType>()->values;
+    const double* center = mean->as<ob::RealVectorStateSpace::StateType>()->values;
+    for (std::size_t i = 0; i < bounds.low.size(); ++i)
+      values[i] = std::min(bounds.high[i],
+                           std::max(bounds.low[i], std::normal_distribution<double>(center[i], stdDev)(engine_)));
+  }
+
+private:
+  std::mt19937_64 engine_;
+};
+
+/// OMPL motion checks at the planner's link-travel resolution.
+class ResolutionMotionValidator : public ob::MotionValidator
+{
+public:
+  ResolutionMotionValidator(const ob::SpaceInformationPtr& si, MotionPlanner& planner)
+    : ob::MotionValidator(si), planner_(planner)
+  {
+  }
+
+  bool checkMotion(const ob::State* s1, const ob::State* s2) const override
+  {
+    const std::size_t n = planner_.size();
+    const bool ok = planner_.segmentValid(toEigen(s1, n), toEigen(s2, n));
+    (ok ? valid_ : invalid_)++;
+    return ok;
+  }
+
+  bool checkMotion(const ob::State* s1, const ob::State* s2, std::pair<ob::State*, double>& last_valid) const override
+  {
+    const std::size_t n = planner_.size();
+    const Eigen::VectorXd a = toEigen(s1, n), b = toEigen(s2, n);
+    double fraction = 1.0;
+    const bool ok = planner_.segmentValid(a, b, &fraction);
+    if (!ok)
+    {
+      if (last_valid.first)
+        fromEigen(a + fraction * (b - a), last_valid.first);
+      last_valid.second = fraction;
+    }
+    (ok ? valid_ : invalid_)++;
+    return ok;
+  }
+
+private:
+  MotionPlanner& planner_;
+};
+}  // namespace
+
+MotionPlanner::MotionPlanner(const CollisionWorld& world, const std::vector<std::string>& joints,
+                             const std::string& tip_link, const Eigen::VectorXd& world_state, double resolution)
+  : checker_(world, joints, world_state), joint_names_(joints), resolution_(resolution)
+{
+  const RobotModel& model = world.model();
+  lower_.resize(static_cast<Eigen::Index>(joints.size()));
+  upper_.resize(static_cast<Eigen::Index>(joints.size()));
+  for (std::size_t i = 0; i < joints.size(); ++i)
+  {
+    const JointModel& joint = model.joints()[model.jointIndex(joints[i])];
+    lower_[i] = joint.lower;
+    upper_[i] = joint.upper;
+  }
+  reach_ = checker_.reach();
+
+  const std::string base = model.links()[model.joints()[model.jointIndex(joints.front())].parent_link].name;
+  const KinematicChain chain(model, base, tip_link);
+  if (chain.jointNames() != joints)
+    throw KinematicsError(ErrorCode::NotSerialChain, "chain " + base + " -> " + tip_link +
+                                                         ": its movable joints are not exactly the planning group");
+  ik_ = std::make_unique<IkSolver>(chain);
+  chain_base_pose_ = model.relativeTransform(world_state, model.links()[0].name, base);
+
+  ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+  auto space = std::make_shared<ob::RealVectorStateSpace>(joints.size());
+  ob::RealVectorBounds bounds(joints.size());
+  for (std::size_t i = 0; i < joints.size(); ++i)
+  {
+    bounds.setLow(i, lower_[i]);
+    bounds.setHigh(i, upper_[i]);
+  }
+  space->setBounds(bounds);
+  space->setStateSamplerAllocator(
+      [this](const ob::StateSpace* s) { return std::make_shared<SeededSampler>(s, sampler_seed_++); });
+  si_ = std::make_shared<ob::SpaceInformation>(space);
+  const std::size_t n = joints.size();
+  si_->setStateValidityChecker([this, n](const ob::State* state) { return checker_.valid(toEigen(state, n)); });
+  si_->setMotionValidator(std::make_shared<ResolutionMotionValidator>(si_, *this));
+  si_->setup();
+}
+
+MotionPlanner::~MotionPlanner() = default;
+
+bool MotionPlanner::stateValid(const Eigen::VectorXd& q)
+{
+  return limitViolation(q).empty() && checker_.valid(q);
+}
+
+std::size_t MotionPlanner::segmentSteps(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const
+{
+  double travel = 0.0;
+  for (Eigen::Index i = 0; i < a.size(); ++i)
+    travel += reach_[i] * std::abs(b[i] - a[i]);
+  return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(travel / resolution_)));
+}
+
+bool MotionPlanner::segmentValid(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double* valid_fraction)
+{
+  const std::size_t steps = segmentSteps(a, b);
+  if (!valid_fraction && !checker_.valid(b))
+    return false;
+  for (std::size_t s = 1; s <= steps; ++s)
+  {
+    const double t = static_cast<double>(s) / static_cast<double>(steps);
+    if (!checker_.valid(a + t * (b - a)))
+    {
+      if (valid_fraction)
+        *valid_fraction = static_cast<double>(s - 1) / static_cast<double>(steps);
+      return false;
+    }
+  }
+  return true;
+}
+
+bool MotionPlanner::pathValid(const std::vector<Eigen::VectorXd>& path)
+{
+  if (path.empty() || !stateValid(path.front()))
+    return false;
+  for (std::size_t i = 1; i < path.size(); ++i)
+    if (!limitViolation(path[i]).empty() || !segmentValid(path[i - 1], path[i]))
+      return false;
+  return true;
+}
+
+std::string MotionPlanner::limitViolation(const Eigen::VectorXd& q) const
+{
+  if (q.size() != lower_.size())
+    return "expected " + std::to_string(lower_.size()) + " joint values, got " + std::to_string(q.size());
+  for (Eigen::Index i = 0; i < q.size(); ++i)
+    if (!std::isfinite(q[i]) || q[i] < lower_[i] - 1e-9 || q[i] > upper_[i] + 1e-9)
+      return "joint " + joint_names_[i] + " = " + std::to_string(q[i]) + " outside [" + std::to_string(lower_[i]) +
+             ", " + std::to_string(upper_[i]) + "]";
+  return "";
+}
+
+PlanResult MotionPlanner::fail(ErrorCode code, const std::string& message) const
+{
+  PlanResult result;
+  result.code = code;
+  result.message = message;
+  return result;
+}
+
+bool MotionPlanner::goalStates(const PlanRequest& request, double budget, std::vector<Eigen::VectorXd>& goals,
+                               PlanResult& error)
+{
+  if (request.goal_joints)
+  {
+    const std::string violation = limitViolation(*request.goal_joints);
+    if (!violation.empty())
+    {
+      error = fail(ErrorCode::OutsideLimits, "goal: " + violation);
+      return false;
+    }
+    const Contact contact = checker_.check(*request.goal_joints);
+    if (contact.collision)
+    {
+      error = fail(ErrorCode::InCollision, "goal: in collision (" + contact.body_a + " - " + contact.body_b + ")");
+      return false;
+    }
+    goals.push_back(*request.goal_joints);
+    return true;
+  }
+  if (!request.goal_pose)
+  {
+    error = fail(ErrorCode::InvalidArgument, "goal: neither joint values nor a pose");
+    return false;
+  }
+  const std::string reason = invalidPoseReason(*request.goal_pose);
+  if (!reason.empty())
+  {
+    error = fail(ErrorCode::InvalidPose, "goal pose: " + reason);
+    return false;
+  }
+  const Eigen::Isometry3d target = chain_base_pose_.inverse() * *request.goal_pose;
+  const Clock::time_point start = Clock::now();
+  Contact first_contact;
+  bool any_solution = false;
+  std::vector<Eigen::VectorXd> candidates = ik_->solveAll(target, request.start);
+  IkOptions options = request.ik;
+  options.seed = request.seed;
+  Eigen::VectorXd seed = request.start;
+  std::mt19937_64 rng(request.seed);
+  while (goals.size() < 4 && seconds(start) < budget)
+  {
+    if (candidates.empty())
+    {
+      options.timeout = std::max(0.0, std::min(options.timeout, budget - seconds(start)));
+      const IkResult result = ik_->solve(target, seed, options);
+      ++options.seed;
+      seed = ik_->chain().randomState(rng);
+      if (!result.success)
+      {
+        if (ik_->hasAnalytic())
+          break;
+        continue;
+      }
+      candidates.push_back(result.q);
+    }
+    for (const Eigen::VectorXd& q : candidates)
+    {
+      any_solution = true;
+      const Contact contact = checker_.check(q);
+      if (!contact.collision)
+        goals.push_back(q);
+      else if (!first_contact.collision)
+        first_contact = contact;
+    }
+    candidates.clear();
+    if (ik_->hasAnalytic() && request.ik.mode == IkOptions::Mode::Full)
+      break;
+  }
+  if (!goals.empty())
+  {
+    std::sort(goals.begin(), goals.end(), [&](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+      return (a - request.start).squaredNorm() < (b - request.start).squaredNorm();
+    });
+    return true;
+  }
+  if (!any_solution)
+    error = fail(ErrorCode::NoSolution, "goal pose: unreachable for " + ik_->chain().tipLink() + " (no IK solution)");
+  else
+    error = fail(ErrorCode::InCollision, "goal pose: every IK solution is in collision (" + first_contact.body_a +
+                                             " - " + first_contact.body_b + ")");
+  return false;
+}
+
+PlanResult MotionPlanner::plan(const PlanRequest& request)
+{
+  const Clock::time_point start_time = Clock::now();
+  const std::string violation = limitViolation(request.start);
+  if (!violation.empty())
+    return fail(ErrorCode::OutsideLimits, "start: " + violation);
+  const Contact start_contact = checker_.check(request.start);
+  if (start_contact.collision)
+    return fail(ErrorCode::InCollision,
+                "start: in collision (" + start_contact.body_a + " - " + start_contact.body_b + ")");
+  if (!std::isfinite(request.time_limit) || request.time_limit <= 0.0)
+    return fail(ErrorCode::InvalidArgument, "time limit: must be positive");
+  std::vector<Eigen::VectorXd> goals;
+  PlanResult result;
+  if (!goalStates(request, 0.5 * request.time_limit, goals, result))
+    return result;
+
+  sampler_seed_ = request.seed * 1000003ull + 1;
+  const std::size_t n = size();
+  auto pdef = std::make_shared<ob::ProblemDefinition>(si_);
+  ob::ScopedState<> start(si_->getStateSpace());
+  fromEigen(request.start, start.get());
+  pdef->addStartState(start);
+  auto goal = std::make_shared<ob::GoalStates>(si_);
+  for (const Eigen::VectorXd& q : goals)
+  {
+    ob::ScopedState<> state(si_->getStateSpace());
+    fromEigen(q, state.get());
+    goal->addState(state);
+  }
+  pdef->setGoal(goal);
+
+  std::vector<Eigen::VectorXd> path;
+  if (segmentValid(request.start, goals.front()))
+  {
+    path = { request.start, goals.front() };
+  }
+  else
+  {
+    const ob::PlannerPtr planner = makePlanner(request.planner, si_);
+    if (!planner)
+    {
+      std::string known;
+      for (const std::string& name : plannerNames())
+        known += (known.empty() ? "" : ", ") + name;
+      return fail(ErrorCode::InvalidArgument, "planner " + request.planner + ": unknown (known: " + known + ")");
+    }
+    planner->setProblemDefinition(pdef);
+    planner->setup();
+    const double remaining = request.time_limit - seconds(start_time);
+    const ob::PlannerStatus status = planner->solve(std::max(1e-3, remaining));
+    if (status != ob::PlannerStatus::EXACT_SOLUTION)
+      return fail(ErrorCode::PlanningFailed, "planner " + request.planner + ": no path within " +
+                                                 std::to_string(request.time_limit) + " s");
+    og::PathGeometric& solution = *pdef->getSolutionPath()->as<og::PathGeometric>();
+    if (request.simplify)
+    {
+      og::PathSimplifier simplifier(si_);
+      simplifier.reduceVertices(solution);
+      simplifier.shortcutPath(solution);
+      simplifier.reduceVertices(solution);
+    }
+    for (std::size_t i = 0; i < solution.getStateCount(); ++i)
+      path.push_back(toEigen(solution.getState(i), n));
+  }
+  if (!pathValid(path))
+    return fail(ErrorCode::PlanningFailed, "planner " + request.planner + ": path failed the segment re-check");
+  result.success = true;
+  result.code = ErrorCode::Ok;
+  result.path = path;
+  result.path_length = pathLength(path);
+  result.planning_time = seconds(start_time);
+  return result;
+}
+
+double pathLength(const std::vector<Eigen::VectorXd>& path)
+{
+  double length = 0.0;
+  for (std::size_t i = 1; i < path.size(); ++i)
+    length += (path[i] - path[i - 1]).norm();
+  return length;
+}
+}  // namespace vrrw_kinematics
