@@ -437,7 +437,6 @@ void ArticulatedRobot::refreshFrames()
 
 const Eigen::MatrixXd& ArticulatedRobot::updateDynamics()
 {
-  refreshFrames();
   inertia_ = jointSpaceInertia(*this);
   response_.setInertia(inertia_);
   return inertia_;
@@ -501,40 +500,40 @@ void ArticulatedRobot::clearFeedForward()
   std::fill(feed_forward_.begin(), feed_forward_.end(), 0.0);
 }
 
-void ArticulatedRobot::compensateGravity(const Eigen::Vector3d& gravity)
+std::vector<double> ArticulatedRobot::gravityTorques(const Eigen::Vector3d& gravity) const
 {
   const int n = body_->getNumLinks();
-  std::vector<double> mass(n);
-  std::vector<Eigen::Vector3d> moment(n);
+  std::vector<double> mass(std::size_t(n), 0.0);
+  std::vector<Eigen::Vector3d> moment(static_cast<std::size_t>(n));
   for (int k = 0; k < n; ++k)
   {
-    mass[k] = body_->getLinkMass(k);
-    moment[k] = mass[k] * bodyPose(k).translation();
+    mass[std::size_t(k)] = body_->getLinkMass(k);
+    moment[std::size_t(k)] = mass[std::size_t(k)] * bodyPose(k).translation();
   }
   for (int k = n - 1; k >= 0; --k)
   {
     const int parent = body_->getParent(k);
     if (parent >= 0)
     {
-      mass[parent] += mass[k];
-      moment[parent] += moment[k];
+      mass[std::size_t(parent)] += mass[std::size_t(k)];
+      moment[std::size_t(parent)] += moment[std::size_t(k)];
     }
   }
+  std::vector<double> torques(joints_.size(), 0.0);
   for (std::size_t i = 0; i < joints_.size(); ++i)
   {
-    const int k = joints_[i].link;
-    const btMultibodyLink& link = body_->getLink(k);
-    const Eigen::Isometry3d frame = bodyPose(k);
-    double generalized;
+    const std::size_t k = std::size_t(joints_[i].link);
+    const btMultibodyLink& link = body_->getLink(int(k));
+    const Eigen::Isometry3d& frame = bodyPose(int(k));
     if (joints_[i].prismatic)
-      generalized = (frame.rotation() * toEigen(link.getAxisBottom(0))).dot(mass[k] * gravity);
+      torques[i] = (frame.rotation() * toEigen(link.getAxisBottom(0))).dot(mass[k] * gravity);
     else
     {
       const Eigen::Vector3d axis = frame.rotation() * toEigen(link.getAxisTop(0));
       const Eigen::Vector3d pivot = frame * (-toEigen(link.m_dVector));
-      generalized = axis.cross(moment[k] - mass[k] * pivot).dot(gravity);
+      torques[i] = axis.cross(moment[k] - mass[k] * pivot).dot(gravity);
     }
-    addJointTorque(i, -generalized);
   }
+  return torques;
 }
 }  // namespace vrrw_physics

@@ -168,11 +168,16 @@ bool PhysicsWorld::step()
   {
     const Eigen::MatrixXd& inertia = e.robot->updateDynamics();
     e.robot->clearFeedForward();
+    std::vector<double> external = e.robot->gravityTorques(options_.gravity);
     if (e.gravity_compensation)
-      e.robot->compensateGravity(options_.gravity);
+      for (std::size_t j = 0; j < external.size(); ++j)
+      {
+        e.robot->addJointTorque(j, -external[j]);
+        external[j] = 0.0;
+      }
     if (e.stable_pd)
     {
-      const std::vector<double> tau = e.stable_pd->torques(options_.dt, inertia);
+      const std::vector<double> tau = e.stable_pd->torques(options_.dt, inertia, external);
       for (std::size_t j = 0; j < tau.size(); ++j)
         if (tau[j] != 0.0)
           e.robot->addJointTorque(j, tau[j]);
@@ -180,6 +185,8 @@ bool PhysicsWorld::step()
   }
   applySprings();
   world_->stepSimulation(btScalar(options_.dt), 0, btScalar(options_.dt));
+  for (RobotEntry& e : robots_)
+    e.robot->refreshFrames();
   time_ += options_.dt;
   ++steps_;
   if (!stateIsSane())

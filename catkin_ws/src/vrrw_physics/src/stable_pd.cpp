@@ -33,7 +33,7 @@ StablePd::StablePd(const ArticulatedRobot& robot) : robot_(robot)
   }
 }
 
-std::vector<double> StablePd::torques(double h, const Eigen::MatrixXd& full) const
+std::vector<double> StablePd::torques(double h, const Eigen::MatrixXd& full, const std::vector<double>& external) const
 {
   const auto& joints = robot_.joints();
   const Eigen::Index n = Eigen::Index(driven_.size());
@@ -44,7 +44,8 @@ std::vector<double> StablePd::torques(double h, const Eigen::MatrixXd& full) con
   const std::vector<double> qd = robot_.velocities();
   const Eigen::VectorXd velocity = Eigen::Map<const Eigen::VectorXd>(qd.data(), Eigen::Index(qd.size()));
   Eigen::MatrixXd a = reduction_.transpose() * full * reduction_;
-  Eigen::VectorXd rhs = reduction_.transpose() * (full * velocity);
+  const Eigen::VectorXd forces = Eigen::Map<const Eigen::VectorXd>(external.data(), Eigen::Index(external.size()));
+  Eigen::VectorXd rhs = reduction_.transpose() * (full * velocity + h * forces);
   Eigen::VectorXd bias(n), gain(n);
   for (Eigen::Index r = 0; r < n; ++r)
   {

@@ -61,14 +61,15 @@ TEST(ArticulatedRobot, MimicJointGetsACouplingNotADrive)
   EXPECT_NEAR(q[std::size_t(robot.jointIndex("g_right_joint"))], -0.02 + 0.01, 1e-12);
 }
 
-TEST(ArticulatedRobot, GravityCompensationCancelsTheStaticTorque)
+TEST(ArticulatedRobot, GravityTorqueIsMassTimesLeverArm)
 {
   const auto urdf = model();
   ArticulatedRobot robot(*urdf, "v", "v_base_link");
   robot.setState({ 0.0 }, { 0.0 });
-  robot.compensateGravity(Eigen::Vector3d(0, 0, -9.81));
   // Arm along +x, hinge about +y: gravity's torque about +y is +m g l (pulls x down = positive about y).
-  EXPECT_NEAR(robot.efforts(0.001)[0], -2.0 * 9.81 * 0.5, 1e-4);
+  EXPECT_NEAR(robot.gravityTorques(Eigen::Vector3d(0, 0, -9.81))[0], 2.0 * 9.81 * 0.5, 1e-4);
+  robot.setState({ 1.0 }, { 0.0 });
+  EXPECT_NEAR(robot.gravityTorques(Eigen::Vector3d(0, 0, -9.81))[0], 2.0 * 9.81 * 0.5 * std::cos(1.0), 1e-4);
 }
 
 TEST(ArticulatedRobot, UnknownBaseLinkIsNamed)

@@ -72,7 +72,7 @@ TEST(StablePd, ImplicitTorqueBringsTheJointToItsPredictedVelocity)
   robot.drives()[0]->setTarget(0.1, 0.0);
   StablePd pd(robot);
   const double h = 0.001;
-  const double tau = pd.torques(h, jointSpaceInertia(robot))[0];
+  const double tau = pd.torques(h, jointSpaceInertia(robot), { 0.0 })[0];
   // x = (I v + h (K e)) / (I + h (h K + D)); tau = K (e - h x) - D x.
   const double x = (0.51 * 0.2 + h * 1e5 * 0.1) / (0.51 + h * (h * 1e5 + 8e4));
   EXPECT_NEAR(tau, 1e5 * (0.1 - h * x) - 8e4 * x, 1e-4);  // Bullet stores the inertia in float

@@ -94,8 +94,10 @@ public:
   void applyWrench(const std::string& link, const Eigen::Vector3d& point, const Eigen::Vector3d& force,
                    const Eigen::Vector3d& torque);
 
-  /// \brief Adds joint torques that cancel gravity on the current configuration (explicit feed-forward).
-  void compensateGravity(const Eigen::Vector3d& gravity);
+  /// \brief Generalized gravity force on each joint (order of joints()) in the current configuration.
+  std::vector<double> gravityTorques(const Eigen::Vector3d& gravity) const;
+  /// \brief Joint torques added for this step so far (feed-forward, drives applied as torques).
+  const std::vector<double>& appliedTorques() const { return feed_forward_; }
   /// \brief Adds a joint torque for this step (reported by efforts()).
   void addJointTorque(std::size_t joint, double torque);
   /// \brief World pose of a Bullet link frame (COM, principal axes); -1 for the base
@@ -103,7 +105,7 @@ public:
   const Eigen::Isometry3d& bodyPose(int body) const { return poses_[std::size_t(body + 1)]; }
   /// \brief Re-reads link frames from Bullet (after a step); setState() does it too.
   void refreshFrames();
-  /// \brief refreshFrames(), then the joint-space inertia M of the configuration, whose inverse
+  /// \brief The joint-space inertia M of the configuration (as of refreshFrames()), whose inverse
   /// the robot's solver rows use this step. Returns M.
   const Eigen::MatrixXd& updateDynamics();
   /// \brief Forgets the feed-forward torques reported by efforts() (Bullet clears applied torques each step).
