@@ -8,6 +8,7 @@
 #include <vrrw_control/fake_robot.h>
 #include <vrrw_control/gripper_action_server.h>
 #include <vrrw_control/physics_robot.h>
+#include <vrrw_control/real_robot.h>
 #include <vrrw_control/ros_drive_link.h>
 #include <vrrw_scene/scene_loader.h>
 #include <urdf_parser/urdf_parser.h>
@@ -135,11 +136,22 @@ int main(int argc, char** argv)
                                              pnh.param("goal_time", 1.0));
   arm_options.confirm_timeout = pnh.param("confirm_timeout", 120.0);
   std::unique_ptr<RealDriverRelay> relay;
+  std::unique_ptr<RosDriveLink> real_link;
+  std::unique_ptr<RealRobot> real;
   if (mode == "real")
+  {
+    const std::string prefix = pnh.param("strip_prefix", true) ? name + "_" : "";
     relay = std::make_unique<RealDriverRelay>(
         pnh.param<std::string>("real_driver_action", "scaled_pos_joint_traj_controller/follow_joint_trajectory"),
-        pnh.param("strip_prefix", true) ? name + "_" : "");
-  ArmActionServer arm_server(nh, arm, *hw, arm_options, std::move(relay));
+        prefix);
+    const std::string real_states = pnh.param<std::string>("real_joint_states", "");
+    if (!real_states.empty())
+    {
+      real_link = std::make_unique<RosDriveLink>(nh, "", real_states, prefix);
+      real = std::make_unique<RealRobot>(robot.arm_joints, *real_link);
+    }
+  }
+  ArmActionServer arm_server(nh, arm, *hw, arm_options, std::move(relay), real.get());
 
   std::unique_ptr<GripperController> gripper;
   std::unique_ptr<GripperActionServer> gripper_server;
@@ -176,6 +188,8 @@ int main(int argc, char** argv)
     const ros::Time now = ros::Time::now();
     const double t = (now - arm_options.clock_origin).toSec(), period = (now - last).toSec();
     hw->read(t, period);
+    if (real)
+      real->read(t, period);
     if (hw->ready())
     {
       arm_server.update(now);

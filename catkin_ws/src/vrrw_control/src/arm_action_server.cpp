@@ -14,12 +14,13 @@ int codeOf(Validation::Error e)
 }  // namespace
 
 ArmActionServer::ArmActionServer(ros::NodeHandle& nh, ArmController& arm, const RobotHardware& hardware,
-                                 Options options, std::unique_ptr<RealDriverRelay> relay)
+                                 Options options, std::unique_ptr<RealDriverRelay> relay, const RobotHardware* real)
   : arm_(arm)
   , hw_(hardware)
   , options_(std::move(options))
   , origin_(options_.clock_origin)
   , relay_(std::move(relay))
+  , real_(real)
   , server_(nh, "arm_controller/follow_joint_trajectory", [this](GoalHandle gh) { onGoal(gh); },
             [this](GoalHandle gh) { onCancel(gh); }, false)
   , name_(nh.getNamespace() + "/arm_controller")
@@ -157,6 +158,13 @@ void ArmActionServer::publishFeedback(const ros::Time& now, const ArmController:
 
 void ArmActionServer::update(const ros::Time& now)
 {
+  if (real_ && real_->ready() && (phase_ == Phase::Idle || phase_ == Phase::Relaying))
+  {
+    std::vector<double> q;
+    for (const auto& j : arm_.joints())
+      q.push_back(real_->state().positions[real_->index(j)]);
+    arm_.adopt(q);
+  }
   const ArmController::Cycle c = arm_.update(toTime(now));
   if (phase_ == Phase::Simulating)
   {

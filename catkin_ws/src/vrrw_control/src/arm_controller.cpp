@@ -47,6 +47,15 @@ JointSample ArmController::actual() const
   return a;
 }
 
+void ArmController::adopt(const std::vector<double>& positions)
+{
+  motion_.reset();
+  stopping_.reset();
+  hold_ = JointSample(joints_.size());
+  hold_.positions = positions;
+  started_ = true;
+}
+
 bool ArmController::moving() const { return motion_ || stopping_; }
 
 JointSample ArmController::restState(double now) const

@@ -2,17 +2,20 @@
 
 namespace vrrw_control
 {
-RosDriveLink::RosDriveLink(ros::NodeHandle& nh, const std::string& targets_topic, const std::string& states_topic)
-  : targets_(nh.advertise<sensor_msgs::JointState>(targets_topic, 10))
-  , states_(nh.subscribe(states_topic, 10, &RosDriveLink::onJointStates, this, ros::TransportHints().tcpNoDelay()))
+RosDriveLink::RosDriveLink(ros::NodeHandle& nh, const std::string& targets_topic, const std::string& states_topic,
+                           const std::string& name_prefix)
+  : states_(nh.subscribe(states_topic, 10, &RosDriveLink::onJointStates, this, ros::TransportHints().tcpNoDelay()))
+  , prefix_(name_prefix)
 {
+  if (!targets_topic.empty())
+    targets_ = nh.advertise<sensor_msgs::JointState>(targets_topic, 10);
 }
 
 void RosDriveLink::onJointStates(const sensor_msgs::JointState& msg)
 {
   for (size_t i = 0; i < msg.name.size() && i < msg.position.size(); ++i)
   {
-    auto& m = latest_[msg.name[i]];
+    auto& m = latest_[prefix_ + msg.name[i]];
     m.position = msg.position[i];
     m.velocity = i < msg.velocity.size() ? msg.velocity[i] : 0.0;
     m.effort = i < msg.effort.size() ? msg.effort[i] : 0.0;
@@ -36,6 +39,8 @@ bool RosDriveLink::latestState(const std::vector<std::string>& joints, JointSamp
 
 void RosDriveLink::sendTargets(const std::vector<std::string>& joints, const JointSample& targets, double)
 {
+  if (!targets_)
+    return;
   out_.header.stamp = ros::Time::now();
   out_.name = joints;
   out_.position = targets.positions;

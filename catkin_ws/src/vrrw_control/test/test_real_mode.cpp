@@ -13,16 +13,23 @@ using State = actionlib::SimpleClientGoalState;
 
 namespace
 {
-/// Plays ur_robot_driver: accepts, reports one feedback with unprefixed names, succeeds.
+/// Plays ur_robot_driver: publishes unprefixed joint_states, accepts a goal, reports one feedback,
+/// ends `offset` rad short on shoulder_pan (a real arm that stopped elsewhere) and succeeds.
 class StandInDriver
 {
 public:
   explicit StandInDriver(ros::NodeHandle& nh)
     : server_(nh, "/stand_in/scaled_pos_joint_traj_controller/follow_joint_trajectory",
               [this](actionlib::ServerGoalHandle<Action> gh) { onGoal(gh); }, false)
+    , states_(nh.advertise<sensor_msgs::JointState>("/stand_in/joint_states", 10))
+    , timer_(nh.createWallTimer(ros::WallDuration(0.02), [this](const ros::WallTimerEvent&) { publish(); }))
   {
+    pose_.name = { "shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint",
+                   "wrist_1_joint",      "wrist_2_joint",       "wrist_3_joint" };
+    pose_.position.assign(6, 0.0);
     server_.start();
   }
+  static constexpr double offset = 0.05;
   std::vector<control_msgs::FollowJointTrajectoryGoal> received() const
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -35,6 +42,11 @@ private:
     {
       std::lock_guard<std::mutex> lock(mutex_);
       goals_.push_back(*gh.getGoal());
+      const auto& g = *gh.getGoal();
+      for (size_t k = 0; k < g.trajectory.joint_names.size(); ++k)
+        for (size_t j = 0; j < 6; ++j)
+          if (pose_.name[j] == g.trajectory.joint_names[k])
+            pose_.position[j] = g.trajectory.points.back().positions[k] - (j == 0 ? offset : 0.0);
     }
     gh.setAccepted();
     control_msgs::FollowJointTrajectoryFeedback f;
@@ -44,9 +56,18 @@ private:
     r.error_string = "stand-in executed";
     gh.setSucceeded(r);
   }
+  void publish()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pose_.header.stamp = ros::Time::now();
+    states_.publish(pose_);
+  }
   mutable std::mutex mutex_;
   std::vector<control_msgs::FollowJointTrajectoryGoal> goals_;
+  sensor_msgs::JointState pose_;
   actionlib::ActionServer<Action> server_;
+  ros::Publisher states_;
+  ros::WallTimer timer_;
 };
 
 StandInDriver* driver = nullptr;
@@ -102,6 +123,18 @@ TEST(RealMode, RelaysOnlyAfterSimulationAndConfirmationByteIdentical)
   EXPECT_EQ(bytes(received[0]), bytes(expected));
   ASSERT_EQ(feedback_names.size(), 6u);
   EXPECT_EQ(feedback_names[0], "ur5e_shoulder_pan_joint");  // driver feedback comes back prefixed
+
+  ros::Duration(0.2).sleep();  // the virtual arm now shows where the real arm stopped
+  const auto q = armNow();
+  const double end = goal.trajectory.points.back().positions[0];
+  EXPECT_NEAR(q[0], end - StandInDriver::offset, 1e-12);
+  // so a goal planned from the simulated end, not from the real arm, fails the start tolerance
+  auto from_sim_end = move("ur5e_", goal.trajectory.points.back().positions, { 0.1, 0, 0, 0, 0, 0 }, 0.5);
+  arm->sendGoal(from_sim_end);
+  ASSERT_TRUE(arm->waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(arm->getState(), State::REJECTED);
+  EXPECT_NE(arm->getResult()->error_string.find("joint ur5e_shoulder_pan_joint: starts 0.05"), std::string::npos)
+      << arm->getResult()->error_string;
 }
 
 TEST(RealMode, CancelBeforeConfirmationSendsNothing)

@@ -25,9 +25,11 @@ public:
     double confirm_timeout = 120.0;  ///< real mode: s to wait for the confirmation
   };
 
-  /// \brief `relay` non-null selects real mode.
+  /// \brief `relay` non-null selects real mode. `real` (optional, real mode) measures the real arm:
+  /// whenever no goal is previewed in simulation the virtual arm adopts its state, so the preview
+  /// and the gate start from where the real arm is, also after a relayed goal ended elsewhere.
   ArmActionServer(ros::NodeHandle& nh, ArmController& arm, const RobotHardware& hardware, Options options,
-                  std::unique_ptr<RealDriverRelay> relay);
+                  std::unique_ptr<RealDriverRelay> relay, const RobotHardware* real = nullptr);
 
   /// \brief One control cycle at `now`; between hardware read and write.
   void update(const ros::Time& now);
@@ -48,6 +50,7 @@ private:
   Options options_;
   ros::Time origin_;
   std::unique_ptr<RealDriverRelay> relay_;
+  const RobotHardware* real_;
   actionlib::ActionServer<Action> server_;
   ros::ServiceServer confirm_;
   GoalHandle active_;

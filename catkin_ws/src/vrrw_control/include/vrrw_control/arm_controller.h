@@ -39,6 +39,9 @@ public:
   /// \brief Ends the goal and stops with bounded deceleration from the desired state at `now`.
   void stop(double now);
 
+  /// \brief Holds the arm at positions measured elsewhere (the real arm), dropping any motion.
+  void adopt(const std::vector<double>& positions);
+
   /// \brief One control cycle; call between hardware.read() and hardware.write(). The first cycle
   /// holds whatever the hardware commands then (a physics robot's first measured state).
   Cycle update(double time);

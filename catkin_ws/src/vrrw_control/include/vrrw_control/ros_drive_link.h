@@ -11,7 +11,10 @@ namespace vrrw_control
 class RosDriveLink : public DriveLink
 {
 public:
-  RosDriveLink(ros::NodeHandle& nh, const std::string& targets_topic, const std::string& states_topic);
+  /// \brief `targets_topic` empty: measure only. `name_prefix` is put before every incoming joint
+  /// name (a real driver reports `shoulder_pan_joint` for our `ur5e_shoulder_pan_joint`).
+  RosDriveLink(ros::NodeHandle& nh, const std::string& targets_topic, const std::string& states_topic,
+               const std::string& name_prefix = "");
   void sendTargets(const std::vector<std::string>& joints, const JointSample& targets, double time) override;
   bool latestState(const std::vector<std::string>& joints, JointSample& state, std::vector<double>& efforts) override;
 
@@ -24,6 +27,7 @@ private:
 
   ros::Publisher targets_;
   ros::Subscriber states_;
+  std::string prefix_;
   std::map<std::string, Measured> latest_;
   sensor_msgs::JointState out_;
 };
