@@ -62,7 +62,7 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
     const Eigen::Isometry3d parent_pose =
         anchor.parent >= 0 ? link_poses[model.joints()[anchors_[anchor.parent].joint].child_link]
                            : Eigen::Isometry3d::Identity();
-    anchor.before = parent_pose.inverse() * link_poses[link.parent_link];
+    anchor.before = parent_pose.inverse() * link_poses[link.parent_link] * model.joints()[*it].origin;
     anchor_of[l] = static_cast<int>(anchors_.size());
     anchors_.push_back(anchor);
   }
@@ -201,8 +201,13 @@ bool StateChecker::collide(const Eigen::VectorXd& q, Contact* contact)
   for (std::size_t a = 0; a < anchors_.size(); ++a)
   {
     const Anchor& anchor = anchors_[a];
-    const Eigen::Isometry3d joint = model.joints()[anchor.joint].transform(q[anchor.group_index]);
-    anchor_poses_[a] = anchor.parent >= 0 ? anchor_poses_[anchor.parent] * anchor.before * joint : anchor.before * joint;
+    const JointModel& joint = model.joints()[anchor.joint];
+    Eigen::Isometry3d& pose = anchor_poses_[a];
+    pose = anchor.parent >= 0 ? anchor_poses_[anchor.parent] * anchor.before : anchor.before;
+    if (joint.type == JointModel::Type::Prismatic)
+      pose.translation() += pose.linear() * (joint.axis * q[anchor.group_index]);
+    else
+      pose.linear() = pose.linear() * Eigen::AngleAxisd(q[anchor.group_index], joint.axis).toRotationMatrix();
   }
   for (std::size_t b = 0; b < moving_bodies_.size(); ++b)
     sphere_centers_[b] = anchor_poses_[moving_bodies_[b].anchor] * moving_bodies_[b].center;

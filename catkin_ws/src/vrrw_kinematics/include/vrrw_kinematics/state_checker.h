@@ -36,7 +36,7 @@ private:
     int parent = -1;  ///< anchor above it; -1: fixed to the world
     int joint = -1;   ///< model joint index
     int group_index = -1;
-    Eigen::Isometry3d before = Eigen::Isometry3d::Identity();  ///< parent anchor (or world) to the joint's parent link
+    Eigen::Isometry3d before = Eigen::Isometry3d::Identity();  ///< parent anchor (or world) to the joint frame at zero
   };
   struct MovingElement
   {
