@@ -72,7 +72,14 @@ void ArmActionServer::onGoal(GoalHandle gh)
                       std::to_string((now - start - goal->trajectory.points.back().time_from_start).toSec()) +
                       " s ago (header.stamp in the past)");
   start = std::max(start, now);
-  const Validation v = arm_.validate(fromMsg(goal->trajectory), toTime(now));
+  if (phase_ == Phase::Relaying)
+    return reject(gh, Result::INVALID_GOAL, "a goal is executing on the real robot; cancel it first");
+  const bool measured = real_ && real_->ready();
+  JointSample real_state(arm_.joints().size());
+  if (measured)
+    real_state.positions = realArm();
+  const Validation v = measured ? arm_.validator().validate(fromMsg(goal->trajectory), real_state) :
+                                  arm_.validate(fromMsg(goal->trajectory), toTime(now));
   if (!v.ok())
     return reject(gh, codeOf(v.error), v.message);
 
@@ -85,6 +92,8 @@ void ArmActionServer::onGoal(GoalHandle gh)
     active_.setCanceled(r, r.error_string);
   }
   gh.setAccepted();
+  if (measured)
+    arm_.adopt(real_state.positions);  // the preview starts where the real arm is
   arm_.start(v, toTime(start), toTime(now), tolerances);
   active_ = gh;
   phase_ = Phase::Simulating;
@@ -145,6 +154,14 @@ bool ArmActionServer::onConfirm(std_srvs::Trigger::Request&, std_srvs::Trigger::
   return true;
 }
 
+std::vector<double> ArmActionServer::realArm() const
+{
+  std::vector<double> q;
+  for (const auto& j : arm_.joints())
+    q.push_back(real_->state().positions[real_->index(j)]);
+  return q;
+}
+
 void ArmActionServer::publishFeedback(const ros::Time& now, const ArmController::Cycle& cycle)
 {
   control_msgs::FollowJointTrajectoryFeedback f;
@@ -159,12 +176,7 @@ void ArmActionServer::publishFeedback(const ros::Time& now, const ArmController:
 void ArmActionServer::update(const ros::Time& now)
 {
   if (real_ && real_->ready() && (phase_ == Phase::Idle || phase_ == Phase::Relaying))
-  {
-    std::vector<double> q;
-    for (const auto& j : arm_.joints())
-      q.push_back(real_->state().positions[real_->index(j)]);
-    arm_.adopt(q);
-  }
+    arm_.adopt(realArm());
   const ArmController::Cycle c = arm_.update(toTime(now));
   if (phase_ == Phase::Simulating)
   {

@@ -137,6 +137,26 @@ TEST(RealMode, RelaysOnlyAfterSimulationAndConfirmationByteIdentical)
       << arm->getResult()->error_string;
 }
 
+TEST(RealMode, GoalsAreCheckedAgainstTheRealArmNotThePreview)
+{
+  const size_t before = driver->received().size();
+  const auto first = move("ur5e_", armNow(), { 0.3, 0, 0, 0, 0, 0 }, 0.3);
+  arm->sendGoal(first);
+  ros::Duration(0.8).sleep();
+  ASSERT_EQ(arm->getState(), State::ACTIVE);  // previewed, awaiting confirmation; the real arm is still
+  ArmClient second_client("/ur5e/arm_controller/follow_joint_trajectory", true);
+  ASSERT_TRUE(second_client.waitForServer(ros::Duration(5.0)));
+  second_client.sendGoal(move("ur5e_", first.trajectory.points.back().positions, { 0.1, 0, 0, 0, 0, 0 }, 0.3));
+  ASSERT_TRUE(second_client.waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(second_client.getState(), State::REJECTED);
+  EXPECT_NE(second_client.getResult()->error_string.find("starts 0.3"), std::string::npos)
+      << second_client.getResult()->error_string;
+  EXPECT_EQ(arm->getState(), State::ACTIVE);
+  arm->cancelGoal();
+  ASSERT_TRUE(arm->waitForResult(ros::Duration(5.0)));
+  EXPECT_EQ(driver->received().size(), before);
+}
+
 TEST(RealMode, CancelBeforeConfirmationSendsNothing)
 {
   const size_t before = driver->received().size();

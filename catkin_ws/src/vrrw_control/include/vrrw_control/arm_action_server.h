@@ -43,6 +43,7 @@ private:
   bool onConfirm(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res);
   void reject(GoalHandle& gh, int code, const std::string& message);
   void finish(int code, const std::string& message);
+  std::vector<double> realArm() const;
   void publishFeedback(const ros::Time& now, const ArmController::Cycle& cycle);
 
   ArmController& arm_;
