@@ -325,7 +325,7 @@ bool CollisionWorld::loadOrComputeAllowedCollisions(const std::string& cache_dir
   return false;
 }
 
-Contact CollisionWorld::check(const Eigen::VectorXd& variables) const
+Contact CollisionWorld::check(const Eigen::VectorXd& variables, const std::string& robot) const
 {
   std::vector<Eigen::Isometry3d> body_poses;
   bodyTransforms(variables, body_poses);
@@ -334,6 +334,8 @@ Contact CollisionWorld::check(const Eigen::VectorXd& variables) const
   {
     const CollisionElement& a = elements_[pair.first];
     const CollisionElement& b = elements_[pair.second];
+    if (!robot.empty() && bodies_[a.body].robot != robot && bodies_[b.body].robot != robot)
+      continue;
     const Eigen::Isometry3d pa = body_poses[a.body] * a.local, pb = body_poses[b.body] * b.local;
     Eigen::Vector3d ca, ha, cb, hb;
     elementAabb(a, pa, ca, ha);

@@ -12,8 +12,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <random>
 
@@ -334,6 +332,14 @@ PlanResult MotionPlanner::plan(const PlanRequest& request)
                 "start: in collision (" + start_contact.body_a + " - " + start_contact.body_b + ")");
   if (!std::isfinite(request.time_limit) || request.time_limit <= 0.0)
     return fail(ErrorCode::InvalidArgument, "time limit: must be positive");
+  const std::vector<std::string> known = plannerNames();
+  if (std::find(known.begin(), known.end(), request.planner) == known.end())
+  {
+    std::string list;
+    for (const std::string& name : known)
+      list += (list.empty() ? "" : ", ") + name;
+    return fail(ErrorCode::InvalidArgument, "planner " + request.planner + ": unknown (known: " + list + ")");
+  }
   std::vector<Eigen::VectorXd> goals;
   PlanResult result;
   if (!goalStates(request, 0.5 * request.time_limit, goals, result))
@@ -362,21 +368,12 @@ PlanResult MotionPlanner::plan(const PlanRequest& request)
   else
   {
     const ob::PlannerPtr planner = makePlanner(request.planner, si_);
-    if (!planner)
-    {
-      std::string known;
-      for (const std::string& name : plannerNames())
-        known += (known.empty() ? "" : ", ") + name;
-      return fail(ErrorCode::InvalidArgument, "planner " + request.planner + ": unknown (known: " + known + ")");
-    }
     if (planner->params().hasParam("range"))
       planner->params().setParam("range", std::to_string(kRange));
     planner->setProblemDefinition(pdef);
     planner->setup();
     const double remaining = request.time_limit - seconds(start_time);
     const ob::PlannerStatus status = planner->solve(std::max(1e-3, remaining));
-    if (std::getenv("VRRW_PLAN_DEBUG"))
-      std::fprintf(stderr, "solve %.3f ms\n", seconds(start_time) * 1e3);
     if (status != ob::PlannerStatus::EXACT_SOLUTION)
       return fail(ErrorCode::PlanningFailed, "planner " + request.planner + ": no path within " +
                                                  std::to_string(request.time_limit) + " s");
@@ -388,13 +385,9 @@ PlanResult MotionPlanner::plan(const PlanRequest& request)
       simplifier.shortcutPath(solution);
       simplifier.reduceVertices(solution);
     }
-    if (std::getenv("VRRW_PLAN_DEBUG"))
-      std::fprintf(stderr, "simplified %.3f ms\n", seconds(start_time) * 1e3);
     for (std::size_t i = 0; i < solution.getStateCount(); ++i)
       path.push_back(toEigen(solution.getState(i), n));
   }
-  if (std::getenv("VRRW_PLAN_DEBUG"))
-    std::fprintf(stderr, "rechecked %.3f ms\n", seconds(start_time) * 1e3);
   result.success = true;
   result.code = ErrorCode::Ok;
   result.path = path;

@@ -89,8 +89,8 @@ public:
 
   /// \brief World pose of every body for the model's variable vector.
   void bodyTransforms(const Eigen::VectorXd& variables, std::vector<Eigen::Isometry3d>& out) const;
-  /// \brief Full-scene check of every pair not allowed.
-  Contact check(const Eigen::VectorXd& variables) const;
+  /// \brief Full-scene check of every pair not allowed (only pairs with a body of `robot` when given).
+  Contact check(const Eigen::VectorXd& variables, const std::string& robot = "") const;
   /// \brief Smallest distance over every pair not allowed (only pairs with `body` when it is given).
   DistanceReport distance(const Eigen::VectorXd& variables, const std::string& body = "") const;
 

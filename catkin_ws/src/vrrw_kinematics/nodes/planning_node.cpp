@@ -1,0 +1,44 @@
+// planning_node: FK, IK, state checks and motion planning for every robot of a scene, as services
+// under /<robot>/; live joint states from /joint_states. Parameter ~scene: a shipped scene name or YAML.
+#include <memory>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <tf2_ros/transform_listener.h>
+#include <vrrw_scene/scene_loader.h>
+
+#include "robot_services.h"
+#include "scene_context.h"
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "planning_node");
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  std::string scene_name;
+  if (!private_nh.getParam("scene", scene_name))
+  {
+    ROS_FATAL("planning_node: parameter ~scene (scene name or YAML path) is required");
+    return 2;
+  }
+  tf2_ros::Buffer tf;
+  tf2_ros::TransformListener listener(tf);
+  std::unique_ptr<vrrw_kinematics::SceneContext> context;
+  std::vector<std::unique_ptr<vrrw_kinematics::RobotServices>> robots;
+  try
+  {
+    context = std::make_unique<vrrw_kinematics::SceneContext>(vrrw_scene::loadScene(scene_name), tf);
+    for (const vrrw_scene::Robot& robot : context->scene().robots)
+      robots.push_back(std::make_unique<vrrw_kinematics::RobotServices>(nh, robot, *context));
+  }
+  catch (const std::exception& e)
+  {
+    ROS_FATAL_STREAM("planning_node: " << e.what());
+    return 2;
+  }
+  const ros::Subscriber joint_states = nh.subscribe<sensor_msgs::JointState>(
+      "/joint_states", 10, [&](const sensor_msgs::JointState::ConstPtr& msg) { context->updateLive(*msg); });
+  ROS_INFO_STREAM("planning_node: scene " << context->scene().name << ", " << robots.size() << " robots, "
+                                          << context->world().acm().size() << " allowed pairs");
+  ros::spin();
+  return 0;
+}

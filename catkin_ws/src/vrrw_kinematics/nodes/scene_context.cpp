@@ -1,0 +1,72 @@
+#include "scene_context.h"
+
+#include <tf2_eigen/tf2_eigen.h>
+
+#include "vrrw_kinematics/ik_solver.h"
+#include "vrrw_kinematics/scene_state.h"
+
+namespace vrrw_kinematics
+{
+SceneContext::SceneContext(const vrrw_scene::Scene& scene, tf2_ros::Buffer& tf)
+  : scene_(scene), world_(CollisionWorld::fromScene(scene)), tf_(tf)
+{
+  world_.loadOrComputeAllowedCollisions(scene.cache_dir);
+  live_ = initialState(world_.model(), scene);
+}
+
+void SceneContext::updateLive(const sensor_msgs::JointState& msg)
+{
+  for (std::size_t i = 0; i < msg.name.size() && i < msg.position.size(); ++i)
+  {
+    const int v = world_.model().variableIndex(msg.name[i]);
+    if (v >= 0 && std::isfinite(msg.position[i]))
+      live_[v] = msg.position[i];
+  }
+}
+
+Eigen::VectorXd SceneContext::overlay(const sensor_msgs::JointState& msg) const
+{
+  if (msg.name.size() != msg.position.size())
+    throw KinematicsError(ErrorCode::InvalidArgument, "joint_state: " + std::to_string(msg.name.size()) +
+                                                          " names but " + std::to_string(msg.position.size()) +
+                                                          " positions");
+  Eigen::VectorXd state = live_;
+  for (std::size_t i = 0; i < msg.name.size(); ++i)
+  {
+    const int v = world_.model().variableIndex(msg.name[i]);
+    if (v < 0)
+      throw KinematicsError(ErrorCode::InvalidArgument, "joint_state: joint " + msg.name[i] + ": not in the scene");
+    if (!std::isfinite(msg.position[i]))
+      throw KinematicsError(ErrorCode::InvalidArgument, "joint_state: joint " + msg.name[i] + ": not finite");
+    state[v] = msg.position[i];
+  }
+  return state;
+}
+
+Eigen::Isometry3d SceneContext::frameInWorld(const std::string& frame, const Eigen::VectorXd& state) const
+{
+  const std::string& root = world_.model().links()[0].name;
+  if (frame.empty() || frame == root)
+    return Eigen::Isometry3d::Identity();
+  for (const LinkModel& link : world_.model().links())
+    if (link.name == frame)
+      return world_.model().relativeTransform(state, root, frame);
+  try
+  {
+    return tf2::transformToEigen(tf_.lookupTransform(root, frame, ros::Time(0), ros::Duration(0.1)));
+  }
+  catch (const tf2::TransformException& e)
+  {
+    throw KinematicsError(ErrorCode::UnknownLink, "frame " + frame + ": unknown (" + e.what() + ")");
+  }
+}
+
+Eigen::Isometry3d SceneContext::poseInWorld(const geometry_msgs::PoseStamped& pose, const Eigen::VectorXd& state) const
+{
+  const auto& p = pose.pose.position;
+  const auto& o = pose.pose.orientation;
+  const Eigen::Isometry3d local =
+      poseFromQuaternion(Eigen::Vector3d(p.x, p.y, p.z), Eigen::Vector4d(o.x, o.y, o.z, o.w));
+  return frameInWorld(pose.header.frame_id, state) * local;
+}
+}  // namespace vrrw_kinematics

@@ -1,0 +1,39 @@
+#pragma once
+#include <Eigen/Geometry>
+#include <geometry_msgs/PoseStamped.h>
+#include <sensor_msgs/JointState.h>
+#include <string>
+#include <tf2_ros/buffer.h>
+#include <vrrw_scene/scene.h>
+
+#include "vrrw_kinematics/collision_world.h"
+#include "vrrw_kinematics/kinematics_error.h"
+
+namespace vrrw_kinematics
+{
+/// \brief What every robot's services share: the scene, its collision world, the live joint state and tf.
+class SceneContext
+{
+public:
+  SceneContext(const vrrw_scene::Scene& scene, tf2_ros::Buffer& tf);
+
+  const vrrw_scene::Scene& scene() const { return scene_; }
+  const CollisionWorld& world() const { return world_; }
+  const Eigen::VectorXd& liveState() const { return live_; }
+  /// \brief Takes the positions of known joints from a joint_states message.
+  void updateLive(const sensor_msgs::JointState& msg);
+  /// \brief The live state with the message's joints set; throws KinematicsError(InvalidArgument) naming an
+  /// unknown joint or a name/position count mismatch.
+  Eigen::VectorXd overlay(const sensor_msgs::JointState& msg) const;
+  /// \brief Pose of a frame (a scene link or any tf frame; "" is the world) in the world at `state`.
+  Eigen::Isometry3d frameInWorld(const std::string& frame, const Eigen::VectorXd& state) const;
+  /// \brief A stamped pose in the world; throws KinematicsError (InvalidPose, UnknownLink).
+  Eigen::Isometry3d poseInWorld(const geometry_msgs::PoseStamped& pose, const Eigen::VectorXd& state) const;
+
+private:
+  vrrw_scene::Scene scene_;
+  CollisionWorld world_;
+  Eigen::VectorXd live_;
+  tf2_ros::Buffer& tf_;
+};
+}  // namespace vrrw_kinematics

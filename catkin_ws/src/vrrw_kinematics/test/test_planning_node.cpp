@@ -1,0 +1,175 @@
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <vrrw_msgs/CheckState.h>
+#include <vrrw_msgs/ComputeFK.h>
+#include <vrrw_msgs/ComputeIK.h>
+#include <vrrw_msgs/Plan.h>
+
+namespace
+{
+const std::vector<std::string> kArm = { "ur5e_shoulder_pan_joint", "ur5e_shoulder_lift_joint", "ur5e_elbow_joint",
+                                        "ur5e_wrist_1_joint", "ur5e_wrist_2_joint", "ur5e_wrist_3_joint" };
+
+sensor_msgs::JointState arm(const std::vector<double>& q)
+{
+  sensor_msgs::JointState state;
+  state.name = kArm;
+  state.position = q;
+  return state;
+}
+
+template <typename Service>
+Service call(const std::string& name, Service service)
+{
+  EXPECT_TRUE(ros::service::waitForService(name, ros::Duration(30.0))) << name;
+  EXPECT_TRUE(ros::service::call(name, service)) << name;
+  return service;
+}
+}  // namespace
+
+TEST(PlanningNode, FkIkRoundTrip)
+{
+  vrrw_msgs::ComputeFK fk;
+  fk.request.joint_state = arm({ 0.3, -1.2, 1.4, -1.8, -1.57, 0.2 });
+  fk = call("/ur5e/compute_fk", fk);
+  ASSERT_EQ(fk.response.error_code, 0) << fk.response.message;
+  EXPECT_EQ(fk.response.pose.header.frame_id, "world");
+  EXPECT_GT(fk.response.pose.pose.position.z, 0.75);
+
+  vrrw_msgs::ComputeIK ik;
+  ik.request.pose = fk.response.pose;
+  ik.request.seed = arm({ 0.25, -1.1, 1.3, -1.7, -1.5, 0.1 });
+  ik = call("/ur5e/compute_ik", ik);
+  ASSERT_EQ(ik.response.error_code, 0) << ik.response.message;
+  ASSERT_EQ(ik.response.solution.position.size(), 6u);
+  for (std::size_t i = 0; i < 6; ++i)
+    EXPECT_NEAR(ik.response.solution.position[i], fk.request.joint_state.position[i], 1e-6);
+
+  vrrw_msgs::ComputeFK in_base;
+  in_base.request.joint_state = fk.request.joint_state;
+  in_base.request.frame_id = "ur5e_base_link";
+  in_base = call("/ur5e/compute_fk", in_base);
+  EXPECT_NEAR(in_base.response.pose.pose.position.z, fk.response.pose.pose.position.z - 0.75, 1e-9);
+}
+
+TEST(PlanningNode, CheckStateNamesTheCollidingPair)
+{
+  vrrw_msgs::CheckState free;
+  free.request.joint_state = arm({ 0.0, -1.57, 1.57, -1.57, -1.57, 0.0 });
+  free = call("/ur5e/check_state", free);
+  EXPECT_TRUE(free.response.valid) << free.response.message;
+
+  vrrw_msgs::CheckState down;  // upper arm pointing down through the table
+  down.request.joint_state = arm({ 0.0, 1.2, 0.0, 0.0, 0.0, 0.0 });
+  down = call("/ur5e/check_state", down);
+  EXPECT_FALSE(down.response.valid);
+  EXPECT_TRUE(down.response.in_collision);
+  EXPECT_EQ(down.response.error_code, 7);
+  EXPECT_TRUE(down.response.link_a == "table" || down.response.link_b == "table")
+      << down.response.link_a << " - " << down.response.link_b;
+
+  vrrw_msgs::CheckState limits;
+  limits.request.joint_state = arm({ 0.0, -1.57, 4.0, -1.57, -1.57, 0.0 });
+  limits = call("/ur5e/check_state", limits);
+  EXPECT_FALSE(limits.response.within_limits);
+  EXPECT_EQ(limits.response.error_code, 6);
+  EXPECT_NE(limits.response.message.find("ur5e_elbow_joint"), std::string::npos);
+}
+
+TEST(PlanningNode, PlansATimedTrajectory)
+{
+  vrrw_msgs::Plan plan;
+  plan.request.start = arm({ -0.8, -1.57, 1.57, -1.57, -1.57, 0.0 });
+  plan.request.goal_joints = arm({ 0.8, -1.2, 1.2, -1.57, -1.57, 0.5 });
+  plan.request.seed = 3;
+  plan = call("/ur5e/plan", plan);
+  ASSERT_EQ(plan.response.error_code, 0) << plan.response.message;
+  const auto& points = plan.response.trajectory.points;
+  ASSERT_GE(points.size(), 2u);
+  EXPECT_EQ(plan.response.trajectory.joint_names, kArm);
+  EXPECT_NEAR(points.front().positions[0], -0.8, 1e-9);
+  EXPECT_NEAR(points.back().positions[0], 0.8, 1e-9);
+  EXPECT_NEAR(points.back().positions[5], 0.5, 1e-9);
+  for (std::size_t k = 1; k < points.size(); ++k)
+    EXPECT_GT(points[k].time_from_start.toSec(), points[k - 1].time_from_start.toSec());
+  for (const double v : points.back().velocities)
+    EXPECT_EQ(v, 0.0);
+  EXPECT_GT(plan.response.planning_time, 0.0);
+  EXPECT_GT(plan.response.path_length, 1.6);
+
+  vrrw_msgs::Plan pose_goal;
+  pose_goal.request.start = plan.request.start;
+  vrrw_msgs::ComputeFK fk;
+  fk.request.joint_state = plan.request.goal_joints;
+  pose_goal.request.goal_pose = call("/ur5e/compute_fk", fk).response.pose;
+  pose_goal.request.planner = "RRT";
+  pose_goal = call("/ur5e/plan", pose_goal);
+  EXPECT_EQ(pose_goal.response.error_code, 0) << pose_goal.response.message;
+}
+
+TEST(PlanningNode, BadRequestsGetCodesAndTheNodeStaysUp)
+{
+  vrrw_msgs::ComputeFK unknown_link;
+  unknown_link.request.link = "no_such_link";
+  EXPECT_EQ(call("/ur5e/compute_fk", unknown_link).response.error_code, 2);
+
+  vrrw_msgs::ComputeFK unknown_frame;
+  unknown_frame.request.frame_id = "no_such_frame";
+  EXPECT_EQ(call("/ur5e/compute_fk", unknown_frame).response.error_code, 2);
+
+  vrrw_msgs::ComputeIK nan_pose;
+  nan_pose.request.pose.pose.position.x = std::nan("");
+  nan_pose.request.pose.pose.orientation.w = 1.0;
+  EXPECT_EQ(call("/ur5e/compute_ik", nan_pose).response.error_code, 4);
+
+  vrrw_msgs::ComputeIK not_unit;
+  not_unit.request.pose.pose.orientation.w = 2.0;
+  const auto not_unit_response = call("/ur5e/compute_ik", not_unit).response;
+  EXPECT_EQ(not_unit_response.error_code, 4);
+  EXPECT_NE(not_unit_response.message.find("quaternion"), std::string::npos);
+
+  vrrw_msgs::ComputeIK unreachable;
+  unreachable.request.pose.header.frame_id = "world";
+  unreachable.request.pose.pose.position.x = 5.0;
+  unreachable.request.pose.pose.orientation.w = 1.0;
+  EXPECT_EQ(call("/ur5e/compute_ik", unreachable).response.error_code, 5);
+
+  vrrw_msgs::Plan outside;
+  outside.request.goal_joints = arm({ 0.0, -1.57, 4.0, -1.57, -1.57, 0.0 });
+  EXPECT_EQ(call("/ur5e/plan", outside).response.error_code, 6);
+
+  vrrw_msgs::Plan goal_in_collision;
+  goal_in_collision.request.goal_joints = arm({ 0.0, 1.2, 0.0, 0.0, 0.0, 0.0 });
+  EXPECT_EQ(call("/ur5e/plan", goal_in_collision).response.error_code, 7);
+
+  vrrw_msgs::Plan start_in_collision;
+  start_in_collision.request.start = arm({ 0.0, 1.2, 0.0, 0.0, 0.0, 0.0 });
+  start_in_collision.request.goal_joints = arm({ 0.0, -1.57, 1.57, -1.57, -1.57, 0.0 });
+  EXPECT_EQ(call("/ur5e/plan", start_in_collision).response.error_code, 7);
+
+  vrrw_msgs::Plan bad_planner;
+  bad_planner.request.goal_joints = arm({ 0.3, -1.57, 1.57, -1.57, -1.57, 0.0 });
+  bad_planner.request.planner = "NoSuchPlanner";
+  EXPECT_EQ(call("/ur5e/plan", bad_planner).response.error_code, 9);
+
+  vrrw_msgs::Plan not_serial;
+  not_serial.request.goal_pose.pose.orientation.w = 1.0;
+  not_serial.request.link = "ur5e_base_link_inertia";
+  EXPECT_EQ(call("/ur5e/plan", not_serial).response.error_code, 3);
+
+  vrrw_msgs::CheckState unknown_joint;
+  unknown_joint.request.joint_state.name = { "no_such_joint" };
+  unknown_joint.request.joint_state.position = { 0.0 };
+  EXPECT_EQ(call("/ur5e/check_state", unknown_joint).response.error_code, 9);
+
+  vrrw_msgs::CheckState still_up;
+  EXPECT_TRUE(ros::service::call("/ur5e/check_state", still_up));
+}
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_planning_node");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
