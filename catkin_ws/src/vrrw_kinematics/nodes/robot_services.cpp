@@ -38,6 +38,8 @@ RobotServices::RobotServices(ros::NodeHandle& nh, const vrrw_scene::Robot& robot
   }
   timing.max_acceleration = loadAccelerationLimits(robot.config_file, robot.arm_joints, robot.name + "_");
   timing_ = std::make_unique<TimeParameterization>(timing);
+  timing.max_deviation = 0.0;
+  timing_exact_ = std::make_unique<TimeParameterization>(timing);
   solverFor(robot.tcp_link);
   const std::string ns = "/" + robot.name + "/";
   servers_.push_back(nh.advertiseService(ns + "compute_fk", &RobotServices::computeFk, this));
@@ -235,7 +237,9 @@ bool RobotServices::plan(vrrw_msgs::Plan::Request& req, vrrw_msgs::Plan::Respons
     if (!result.success)
       throw KinematicsError(result.code, result.message);
     res.path_length = result.path_length;
-    const vrrw_trajectory::JointTrajectory trajectory = timing_->compute(result.path, robot_.arm_joints);
+    vrrw_trajectory::JointTrajectory trajectory = timing_->compute(result.path, robot_.arm_joints);
+    if (!planner.trajectoryValid(trajectory))
+      trajectory = timing_exact_->compute(result.path, robot_.arm_joints);
     res.trajectory.joint_names = trajectory.joint_names;
     for (const auto& point : trajectory.points)
     {

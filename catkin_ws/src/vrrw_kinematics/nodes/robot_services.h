@@ -35,7 +35,8 @@ private:
   std::string arm_base_;
   std::vector<int> arm_variables_;
   std::map<std::string, std::unique_ptr<IkSolver>> solvers_;
-  std::unique_ptr<TimeParameterization> timing_;
+  std::unique_ptr<TimeParameterization> timing_;          ///< blended corners
+  std::unique_ptr<TimeParameterization> timing_exact_;    ///< stops at every waypoint, stays on the path
   std::vector<ros::ServiceServer> servers_;
 };
 }  // namespace vrrw_kinematics

@@ -217,6 +217,15 @@ bool MotionPlanner::pathValid(const std::vector<Eigen::VectorXd>& path)
   return true;
 }
 
+bool MotionPlanner::trajectoryValid(const vrrw_trajectory::JointTrajectory& trajectory)
+{
+  std::vector<Eigen::VectorXd> path;
+  for (const auto& point : trajectory.points)
+    path.push_back(Eigen::Map<const Eigen::VectorXd>(point.positions.data(),
+                                                     static_cast<Eigen::Index>(point.positions.size())));
+  return pathValid(path);
+}
+
 std::string MotionPlanner::limitViolation(const Eigen::VectorXd& q) const
 {
   if (q.size() != lower_.size())

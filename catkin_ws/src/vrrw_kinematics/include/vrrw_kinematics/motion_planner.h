@@ -10,6 +10,7 @@
 #include "vrrw_kinematics/ik_options.h"
 #include "vrrw_kinematics/ik_solver.h"
 #include "vrrw_kinematics/state_checker.h"
+#include <vrrw_trajectory/joint_trajectory.h>
 
 namespace ompl
 {
@@ -75,6 +76,9 @@ public:
   bool segmentValid(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double* valid_fraction = nullptr);
   /// \brief True when every segment of `path` is valid.
   bool pathValid(const std::vector<Eigen::VectorXd>& path);
+  /// \brief True when the motion between consecutive trajectory samples is valid (blended corners leave
+  /// the planned polyline, so a timed trajectory is checked again).
+  bool trajectoryValid(const vrrw_trajectory::JointTrajectory& trajectory);
 
 private:
   PlanResult fail(ErrorCode code, const std::string& message) const;
