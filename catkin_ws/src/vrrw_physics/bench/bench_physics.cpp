@@ -1,4 +1,4 @@
-// vrrw_bench_physics --scene NAME [--seconds 10] [--dt 0.001] [--mode rigid]
+// vrrw_bench_physics --scene NAME [--seconds 10] [--dt 0.001] [--mode rigid] [--drives constraint|stable_pd]
 // Steps a scene as fast as possible on one thread, every robot holding its initial pose against
 // gravity; reports steps_per_s, real-time factor (wall clock, and CPU time of this process: the
 // machine is shared) and the largest hold error. Last line: JSON.
@@ -40,10 +40,14 @@ int main(int argc, char** argv)
         mode = value;
       else if (arg == "--iterations")
         options.solver_iterations = std::stoi(value);
+      else if (arg == "--drives" && (value == "constraint" || value == "stable_pd"))
+        options.drive_scheme =
+            value == "constraint" ? vrrw_physics::DriveScheme::Constraint : vrrw_physics::DriveScheme::StablePd;
       else
       {
         std::cerr << "vrrw_bench_physics: unknown option " << arg
-                  << " (--scene NAME --seconds S --dt DT --mode rigid|compliant --iterations N)\n";
+                  << " (--scene NAME --seconds S --dt DT --mode rigid|compliant --iterations N "
+                     "--drives constraint|stable_pd)\n";
         return 2;
       }
     }
@@ -89,12 +93,13 @@ int main(int argc, char** argv)
           max_error = std::max(max_error, std::abs(state.position[j] - hold[r][j]));
     }
     std::cerr << "\n";
-    std::printf("{\"bench\": \"physics\", \"scene\": \"%s\", \"mode\": \"%s\", \"dt\": %g, \"sim_seconds\": %g, "
+    std::printf("{\"bench\": \"physics\", \"scene\": \"%s\", \"mode\": \"%s\", \"drives\": \"%s\", \"dt\": %g, \"sim_seconds\": %g, "
                 "\"robots\": %zu, \"objects\": %zu, \"dofs\": %d, \"solver_iterations\": %d, \"steps\": %ld, "
                 "\"wall_seconds\": %.3f, \"cpu_seconds\": %.3f, \"steps_per_s\": %.1f, \"rtf\": %.2f, \"rtf_cpu\": %.2f, "
                 "\"max_hold_error_rad\": %.3g, "
                 "\"guard_rejections\": %d}\n",
-                scene.name.c_str(), mode.c_str(), options.dt, world.time(), names.size(), world.objectNames().size(),
+                scene.name.c_str(), mode.c_str(),
+                options.drive_scheme == vrrw_physics::DriveScheme::Constraint ? "constraint" : "stable_pd", options.dt, world.time(), names.size(), world.objectNames().size(),
                 dofs, options.solver_iterations, steps, wall, cpu, steps / wall, world.time() / wall, world.time() / cpu, max_error,
                 rejected);
     return 0;

@@ -274,6 +274,8 @@ ArticulatedRobot::ArticulatedRobot(const urdf::ModelInterface& model, const std:
     collider->setFriction(btScalar(material.friction));
     collider->setRestitution(btScalar(material.restitution));
     collider->setUserIndex(b.parts.empty() ? 0 : 1);
+    // Friction anchors: static friction corrects position drift, so a held object does not creep.
+    collider->setCollisionFlags(collider->getCollisionFlags() | btCollisionObject::CF_HAS_FRICTION_ANCHOR);
     shapes_.push_back(std::move(compound));
     if (i == 0)
       body_->setBaseCollider(collider.get());
@@ -304,8 +306,10 @@ ArticulatedRobot::ArticulatedRobot(const urdf::ModelInterface& model, const std:
       sim.mimic = master;
       sim.multiplier = joint->mimic->multiplier;
       sim.offset = joint->mimic->offset;
-      coupling_of_joint_[&sim - joints_.data()] = int(couplings_.size());
+      coupling_of_joint_[std::size_t(&sim - joints_.data())] = int(couplings_.size());
       couplings_.push_back(std::move(coupling));
+      sim.mimic_drive = int(mimic_drives_.size());
+      mimic_drives_.push_back(std::make_unique<JointDrive>(body_.get(), sim.link, &response_));
       continue;
     }
     sim.drive = int(drives_.size());
@@ -326,8 +330,12 @@ ArticulatedRobot::~ArticulatedRobot()
   for (auto& c : couplings_)
     world_->removeMultiBodyConstraint(c.get());
   if (drive_constraints_)
+  {
     for (auto& d : drives_)
       world_->removeMultiBodyConstraint(d.get());
+    for (auto& d : mimic_drives_)
+      world_->removeMultiBodyConstraint(d.get());
+  }
   if (limits_)
     world_->removeMultiBodyConstraint(limits_.get());
   for (auto& c : colliders_)
@@ -355,8 +363,12 @@ void ArticulatedRobot::addToWorld(btMultiBodyDynamicsWorld* world, bool drive_co
   for (auto& c : couplings_)
     world->addMultiBodyConstraint(c.get());
   if (drive_constraints)
+  {
     for (auto& d : drives_)
       world->addMultiBodyConstraint(d.get());
+    for (auto& d : mimic_drives_)
+      world->addMultiBodyConstraint(d.get());
+  }
 }
 
 int ArticulatedRobot::jointIndex(const std::string& joint) const
@@ -393,10 +405,36 @@ std::vector<double> ArticulatedRobot::efforts(double dt) const
     if (joints_[i].drive >= 0 && drive_constraints_)
       e[i] = drives_[std::size_t(joints_[i].drive)]->getAppliedImpulse(0) / dt;
     else if (coupling_of_joint_[i] >= 0)
-      e[i] = couplings_[coupling_of_joint_[i]]->getAppliedImpulse(0) / dt;
+    {
+      e[i] = couplings_[std::size_t(coupling_of_joint_[i])]->getAppliedImpulse(0) / dt;
+      if (drive_constraints_)
+        e[i] += mimic_drives_[std::size_t(joints_[i].mimic_drive)]->getAppliedImpulse(0) / dt;
+    }
     e[i] += feed_forward_[i];
   }
   return e;
+}
+
+void ArticulatedRobot::followMasters()
+{
+  for (const SimJoint& joint : joints_)
+  {
+    if (joint.mimic_drive < 0)
+      continue;
+    double factor = joint.multiplier, offset = joint.offset;
+    const SimJoint* master = &joints_[std::size_t(joint.mimic)];
+    while (master->mimic >= 0)
+    {
+      offset += factor * master->offset;
+      factor *= master->multiplier;
+      master = &joints_[std::size_t(master->mimic)];
+    }
+    const JointDrive& lead = *drives_[std::size_t(master->drive)];
+    JointDrive& follower = *mimic_drives_[std::size_t(joint.mimic_drive)];
+    follower.setGains(lead.stiffness(), lead.damping());
+    follower.setForceLimit(joint.max_effort > 0.0 ? joint.max_effort : lead.forceLimit());
+    follower.setTarget(factor * lead.targetPosition() + offset, factor * lead.targetVelocity());
+  }
 }
 
 std::vector<double> ArticulatedRobot::withMimics(std::vector<double> positions) const

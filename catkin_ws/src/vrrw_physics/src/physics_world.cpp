@@ -80,6 +80,7 @@ PhysicsWorld::PhysicsWorld(const vrrw_scene::Scene& scene, const WorldOptions& o
   const Eigen::Vector3d& g = options_.gravity;
   world_->setGravity(btVector3(btScalar(g.x()), btScalar(g.y()), btScalar(g.z())));
   world_->getSolverInfo().m_numIterations = options_.solver_iterations;
+  world_->getSolverInfo().m_numNonContactInnerIterations = options_.solver_inner_iterations;
   world_->getSolverInfo().m_leastSquaresResidualThreshold = btScalar(options_.solver_residual);
   world_->getSolverInfo().m_timeStep = btScalar(options_.dt);
 
@@ -167,6 +168,7 @@ bool PhysicsWorld::step()
   for (RobotEntry& e : robots_)
   {
     const Eigen::MatrixXd& inertia = e.robot->updateDynamics();
+    e.robot->followMasters();
     e.robot->clearFeedForward();
     std::vector<double> external = e.robot->gravityTorques(options_.gravity);
     if (e.gravity_compensation)

@@ -38,6 +38,7 @@ struct SimJoint
   double max_velocity = 0.0;  ///< from the URDF, 0 when absent
   int drive = -1;             ///< index into drives(), -1 for a mimic joint
   int mimic = -1;             ///< index in joints() of the joint it mimics, -1 when none
+  int mimic_drive = -1;       ///< index of its follower drive (constraint scheme), -1 when none
   double multiplier = 1.0;    ///< q = multiplier * q_master + offset
   double offset = 0.0;
 };
@@ -46,7 +47,9 @@ struct SimJoint
 ///
 /// Links joined by fixed joints are merged (mass, inertia, collision shapes); every movable joint
 /// (revolute, continuous, prismatic) becomes a Bullet link whose frame sits at its centre of mass on
-/// the principal axes of inertia. Non-mimic joints get a JointDrive, mimic joints a JointCoupling,
+/// the principal axes of inertia. Non-mimic joints get a JointDrive, mimic joints a JointCoupling
+/// plus a follower drive that copies the master's gains and (mapped) target, so every finger link is
+/// pushed by its own drive and the solver need not carry the grip force through the coupling chain;
 /// limited joints share one JointLimits; every Bullet link gets a collider (links without
 /// collision geometry get one that collides with nothing, so its constraints are solved).
 /// Featherstone, "Rigid Body Dynamics Algorithms", 2008.
@@ -78,6 +81,8 @@ public:
   std::vector<double> velocities() const;
   /// \brief Joint efforts of the last step: drive (or coupling) force plus feed-forward torque.
   std::vector<double> efforts(double dt) const;
+  /// \brief Copies each master drive's gains and mapped target to its mimic joints' follower drives.
+  void followMasters();
   /// \brief Positions of every joint from those of the non-mimic joints (mimic entries are recomputed).
   std::vector<double> withMimics(std::vector<double> positions) const;
   /// \brief Sets positions and velocities of every joint (order of joints()) and refreshes frames.
@@ -127,6 +132,7 @@ private:
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
   std::vector<std::unique_ptr<JointDrive>> drives_;
   std::vector<std::unique_ptr<JointCoupling>> couplings_;
+  std::vector<std::unique_ptr<JointDrive>> mimic_drives_;
   std::unique_ptr<JointLimits> limits_;
   std::vector<SimJoint> joints_;
   std::vector<double> feed_forward_;

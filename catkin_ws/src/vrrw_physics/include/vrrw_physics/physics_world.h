@@ -36,17 +36,19 @@ public:
 /// \brief How joint drives are made implicit.
 enum class DriveScheme
 {
-  StablePd,   ///< joint-space implicit PD per robot (StablePd), applied as torques: fast
-  Constraint  ///< one soft solver row per drive (JointDrive), solved with contacts: exact coupling
+  Constraint,  ///< one soft solver row per drive (JointDrive), solved together with contacts
+  StablePd     ///< joint-space implicit PD per robot (StablePd) applied as torques; forces it does not
+               ///< predict (contacts, pushes) meet a stiffness of only K*M/(M + h*(h*K + D))
 };
 
 /// \brief Simulation settings.
 struct WorldOptions
 {
-  DriveScheme drive_scheme = DriveScheme::StablePd;
+  DriveScheme drive_scheme = DriveScheme::Constraint;
   double dt = 0.001;                                    ///< fixed step (s)
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);
   int solver_iterations = 30;        ///< most Gauss-Seidel sweeps per step
+  int solver_inner_iterations = 5;  ///< sweeps over joint rows (drives, couplings, limits) per sweep
   double solver_residual = 1e-9;     ///< stop sweeping when the squared impulse change falls below
   bool gravity_compensation = true;  ///< feed-forward torques cancelling gravity on each robot
   double link_friction = 1.0;
