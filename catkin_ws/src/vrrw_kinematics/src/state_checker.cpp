@@ -135,10 +135,36 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
     entry.elements.emplace_back(slot_of[first], moving ? slot_of[second] : -1 - second);
     ++pair_count_;
   }
-  for (const bool moving : { false, true })
-    for (const auto& entry : grouped)
-      if (entry.second.moving == moving)
-        body_pairs_.push_back(entry.second);
+  std::map<std::pair<int, std::string>, StaticGroup> groups;
+  for (const auto& entry : grouped)
+  {
+    const BodyPair& pair = entry.second;
+    if (pair.moving)
+    {
+      moving_pairs_.push_back(pair);
+      continue;
+    }
+    const CollisionBody& other = bodies[pair.b];
+    StaticGroup& group = groups[{ pair.a, other.robot.empty() ? "object " + other.name : other.robot }];
+    const Eigen::Vector3d low = body_centers_[pair.b] - body_halves_[pair.b];
+    const Eigen::Vector3d high = body_centers_[pair.b] + body_halves_[pair.b];
+    if (group.pairs.empty())
+    {
+      group.a = pair.a;
+      group.center = 0.5 * (low + high);
+      group.half = 0.5 * (high - low);
+    }
+    else
+    {
+      const Eigen::Vector3d merged_low = (group.center - group.half).cwiseMin(low);
+      const Eigen::Vector3d merged_high = (group.center + group.half).cwiseMax(high);
+      group.center = 0.5 * (merged_low + merged_high);
+      group.half = 0.5 * (merged_high - merged_low);
+    }
+    group.pairs.push_back(pair);
+  }
+  for (auto& entry : groups)
+    static_groups_.push_back(std::move(entry.second));
 
   sphere_centers_.resize(moving_bodies_.size());
   element_poses_.resize(moving_elements_.size());
@@ -212,40 +238,54 @@ bool StateChecker::collide(const Eigen::VectorXd& q, Contact* contact)
   for (std::size_t b = 0; b < moving_bodies_.size(); ++b)
     sphere_centers_[b] = anchor_poses_[moving_bodies_[b].anchor] * moving_bodies_[b].center;
 
-  const auto& elements = world_.elements();
-  for (const BodyPair& pair : body_pairs_)
+  for (const StaticGroup& group : static_groups_)
   {
-    const double radius = moving_bodies_[pair.a].radius;
-    if (pair.moving)
-    {
-      const double reach = radius + moving_bodies_[pair.b].radius;
-      if ((sphere_centers_[pair.a] - sphere_centers_[pair.b]).squaredNorm() > reach * reach)
-        continue;
-    }
-    else if (!sphereTouchesBox(sphere_centers_[pair.a], radius, body_centers_[pair.b], body_halves_[pair.b]))
+    if (!sphereTouchesBox(sphere_centers_[group.a], moving_bodies_[group.a].radius, group.center, group.half))
       continue;
-    for (const auto& element_pair : pair.elements)
-    {
-      const int slot_a = element_pair.first;
-      const Eigen::Isometry3d& pose_a = elementPose(slot_a);
-      const int slot_b = element_pair.second;
-      const bool b_moves = slot_b >= 0;
-      const int element_b = b_moves ? moving_elements_[slot_b].element : -1 - slot_b;
-      const Eigen::Isometry3d& pose_b = b_moves ? elementPose(slot_b) : static_poses_[element_b];
-      const Eigen::Vector3d& center_b = b_moves ? centers_[slot_b] : static_centers_[element_b];
-      const Eigen::Vector3d& half_b = b_moves ? halves_[slot_b] : static_halves_[element_b];
-      const int element_a = moving_elements_[slot_a].element;
-      if (!aabbOverlap(centers_[slot_a], halves_[slot_a], center_b, half_b) ||
-          !elementsCollide(elements[element_a], pose_a, elements[element_b], pose_b))
-        continue;
-      if (kReport)
-      {
-        contact->collision = true;
-        contact->body_a = world_.bodies()[elements[element_a].body].name;
-        contact->body_b = world_.bodies()[elements[element_b].body].name;
-      }
+    for (const BodyPair& pair : group.pairs)
+      if (pairCollides<kReport>(pair, contact))
+        return true;
+  }
+  for (const BodyPair& pair : moving_pairs_)
+    if (pairCollides<kReport>(pair, contact))
       return true;
+  return false;
+}
+
+template <bool kReport>
+bool StateChecker::pairCollides(const BodyPair& pair, Contact* contact)
+{
+  const double radius = moving_bodies_[pair.a].radius;
+  if (pair.moving)
+  {
+    const double reach = radius + moving_bodies_[pair.b].radius;
+    if ((sphere_centers_[pair.a] - sphere_centers_[pair.b]).squaredNorm() > reach * reach)
+      return false;
+  }
+  else if (!sphereTouchesBox(sphere_centers_[pair.a], radius, body_centers_[pair.b], body_halves_[pair.b]))
+    return false;
+  const auto& elements = world_.elements();
+  for (const auto& element_pair : pair.elements)
+  {
+    const int slot_a = element_pair.first;
+    const Eigen::Isometry3d& pose_a = elementPose(slot_a);
+    const int slot_b = element_pair.second;
+    const bool b_moves = slot_b >= 0;
+    const int element_b = b_moves ? moving_elements_[slot_b].element : -1 - slot_b;
+    const Eigen::Isometry3d& pose_b = b_moves ? elementPose(slot_b) : static_poses_[element_b];
+    const Eigen::Vector3d& center_b = b_moves ? centers_[slot_b] : static_centers_[element_b];
+    const Eigen::Vector3d& half_b = b_moves ? halves_[slot_b] : static_halves_[element_b];
+    const int element_a = moving_elements_[slot_a].element;
+    if (!aabbOverlap(centers_[slot_a], halves_[slot_a], center_b, half_b) ||
+        !elementsCollide(elements[element_a], pose_a, elements[element_b], pose_b))
+      continue;
+    if (kReport)
+    {
+      contact->collision = true;
+      contact->body_a = world_.bodies()[elements[element_a].body].name;
+      contact->body_b = world_.bodies()[elements[element_b].body].name;
     }
+    return true;
   }
   return false;
 }

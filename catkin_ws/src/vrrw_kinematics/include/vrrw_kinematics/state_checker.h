@@ -62,6 +62,8 @@ private:
   bool collide(const Eigen::VectorXd& q, Contact* contact);
   void computeReach();
   const Eigen::Isometry3d& elementPose(int slot);
+  template <bool kReport>
+  bool pairCollides(const BodyPair& pair, Contact* contact);
 
   const CollisionWorld& world_;
   std::vector<int> group_;  ///< model joint index per group joint
@@ -81,7 +83,15 @@ private:
   std::vector<Eigen::Vector3d> static_halves_;
   std::vector<Eigen::Vector3d> body_centers_;  ///< static bodies' boxes
   std::vector<Eigen::Vector3d> body_halves_;
-  std::vector<BodyPair> body_pairs_;  ///< pairs with a static body first, then moving-moving pairs
+  struct StaticGroup  ///< a moving body against the static bodies of one robot or one object
+  {
+    int a = -1;
+    Eigen::Vector3d center = Eigen::Vector3d::Zero();
+    Eigen::Vector3d half = Eigen::Vector3d::Zero();
+    std::vector<BodyPair> pairs;
+  };
+  std::vector<StaticGroup> static_groups_;
+  std::vector<BodyPair> moving_pairs_;
   std::size_t pair_count_ = 0;
   std::vector<double> reach_;
 };
