@@ -1,0 +1,170 @@
+// Node test against a real master: joint states per robot and combined, objects on tf, drive
+// targets move the arm, bad input gets an error on ~errors and the node keeps running,
+// pause / step / resume / reset.
+#include <vrrw_physics/SetGains.h>
+#include <vrrw_physics/SetSpring.h>
+
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <std_msgs/String.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace
+{
+struct Listener
+{
+  sensor_msgs::JointState last;
+  int count = 0;
+  std::vector<std::string> errors;
+
+  Listener()
+  {
+    ros::NodeHandle nh;
+    states = nh.subscribe<sensor_msgs::JointState>("/ur5e/joint_states", 10, [this](const sensor_msgs::JointStateConstPtr& m) {
+      last = *m;
+      ++count;
+    });
+    all = nh.subscribe<sensor_msgs::JointState>("/joint_states", 10, [this](const sensor_msgs::JointStateConstPtr& m) { all_last = *m; });
+    error_sub = nh.subscribe<std_msgs::String>("/physics/errors", 10, [this](const std_msgs::StringConstPtr& m) { errors.push_back(m->data); });
+  }
+
+  bool waitFor(const std::function<bool()>& done, double seconds)
+  {
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+    while (ros::WallTime::now() < end && ros::ok())
+    {
+      ros::spinOnce();
+      if (done())
+        return true;
+      ros::WallDuration(0.01).sleep();
+    }
+    return false;
+  }
+
+  double position(const std::string& joint) const
+  {
+    const auto it = std::find(last.name.begin(), last.name.end(), joint);
+    return it == last.name.end() ? std::numeric_limits<double>::quiet_NaN() : last.position[std::size_t(it - last.name.begin())];
+  }
+
+  bool errorMentions(const std::string& text) const
+  {
+    return std::any_of(errors.begin(), errors.end(), [&](const std::string& e) { return e.find(text) != std::string::npos; });
+  }
+
+  sensor_msgs::JointState all_last;
+  ros::Subscriber states, all, error_sub;
+};
+
+bool trigger(const std::string& service)
+{
+  std_srvs::Trigger srv;
+  return ros::service::call(service, srv) && srv.response.success;
+}
+}  // namespace
+
+TEST(PhysicsNode, PublishesJointStatesAndObjectFrames)
+{
+  Listener l;
+  ASSERT_TRUE(ros::service::waitForService("/physics/reset", ros::Duration(30)));
+  ASSERT_TRUE(l.waitFor([&] { return l.count > 0 && !l.all_last.name.empty(); }, 10.0));
+  EXPECT_EQ(l.last.name.size(), 12u);
+  EXPECT_EQ(l.last.name.front(), "ur5e_shoulder_pan_joint");
+  EXPECT_EQ(l.last.position.size(), l.last.name.size());
+  EXPECT_EQ(l.last.velocity.size(), l.last.name.size());
+  EXPECT_EQ(l.all_last.name.size(), 12u);
+  EXPECT_NEAR(l.position("ur5e_shoulder_lift_joint"), -1.5708, 1e-3);
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener tf(buffer);
+  EXPECT_TRUE(buffer.canTransform("world", "drill", ros::Time(0), ros::Duration(5.0)));
+}
+
+TEST(PhysicsNode, DriveTargetsMoveTheArm)
+{
+  Listener l;
+  ros::NodeHandle nh;
+  ros::Publisher targets = nh.advertise<sensor_msgs::JointState>("/ur5e/drive_targets", 1, true);
+  ASSERT_TRUE(l.waitFor([&] { return targets.getNumSubscribers() > 0 && l.count > 0; }, 10.0));
+  sensor_msgs::JointState goal;
+  goal.name = { "ur5e_shoulder_pan_joint" };
+  goal.position = { 0.3 };
+  goal.velocity = { 0.0 };
+  targets.publish(goal);
+  EXPECT_TRUE(l.waitFor([&] { return l.position("ur5e_shoulder_pan_joint") > 0.25; }, 10.0))
+      << "pan at " << l.position("ur5e_shoulder_pan_joint");
+  ASSERT_TRUE(trigger("/physics/reset"));
+  EXPECT_TRUE(l.waitFor([&] { return std::abs(l.position("ur5e_shoulder_pan_joint")) < 0.01; }, 5.0));
+}
+
+TEST(PhysicsNode, BadInputIsReportedAndTheNodeKeepsRunning)
+{
+  Listener l;
+  ros::NodeHandle nh;
+  ros::Publisher targets = nh.advertise<sensor_msgs::JointState>("/ur5e/drive_targets", 10);
+  ASSERT_TRUE(l.waitFor([&] { return targets.getNumSubscribers() > 0 && l.count > 0; }, 10.0));
+  sensor_msgs::JointState bad;
+  bad.name = { "ur5e_elbow_joint", "ur5e_no_such_joint" };
+  bad.position = { 1.0, 0.0 };
+  targets.publish(bad);
+  bad.name = { "ur5e_elbow_joint" };
+  bad.position = { std::numeric_limits<double>::quiet_NaN() };
+  targets.publish(bad);
+  EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("ur5e_no_such_joint") && l.errorMentions("not finite"); }, 5.0));
+
+  vrrw_physics::SetGains gains;
+  gains.request.robot = "ur5e";
+  gains.request.stiffness = { 1.0, 2.0 };
+  gains.request.damping = { 1.0, 2.0 };
+  ASSERT_TRUE(ros::service::call("/physics/set_gains", gains));
+  EXPECT_FALSE(gains.response.success);
+  EXPECT_NE(gains.response.message.find("6 joints but 2"), std::string::npos) << gains.response.message;
+  gains.request.joints = { "ur5e_elbow_joint" };
+  gains.request.stiffness = { -5.0 };
+  gains.request.damping = { 1.0 };
+  ASSERT_TRUE(ros::service::call("/physics/set_gains", gains));
+  EXPECT_FALSE(gains.response.success);
+
+  vrrw_physics::SetSpring spring;
+  spring.request.id = "hand";
+  spring.request.body = "ur5e_no_such_link";
+  spring.request.target.orientation.w = 1.0;
+  spring.request.stiffness = 100.0;
+  ASSERT_TRUE(ros::service::call("/physics/set_spring", spring));
+  EXPECT_FALSE(spring.response.success);
+  EXPECT_NE(spring.response.message.find("ur5e_no_such_link"), std::string::npos);
+
+  const int before = l.count;
+  EXPECT_TRUE(l.waitFor([&] { return l.count > before + 5; }, 5.0));
+  EXPECT_NEAR(l.position("ur5e_elbow_joint"), 1.5708, 1e-3);  // the rejected targets were not applied
+}
+
+TEST(PhysicsNode, PauseStepResume)
+{
+  Listener l;
+  ASSERT_TRUE(l.waitFor([&] { return l.count > 0; }, 10.0));
+  ASSERT_TRUE(trigger("/physics/pause"));
+  ros::WallDuration(0.2).sleep();
+  ros::spinOnce();
+  const int paused_at = l.count;
+  ros::WallDuration(0.3).sleep();
+  ros::spinOnce();
+  EXPECT_EQ(l.count, paused_at);
+  ASSERT_TRUE(trigger("/physics/step"));
+  EXPECT_TRUE(l.waitFor([&] { return l.count == paused_at + 1; }, 2.0));
+  ASSERT_TRUE(trigger("/physics/resume"));
+  EXPECT_TRUE(l.waitFor([&] { return l.count > paused_at + 10; }, 5.0));
+}
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_physics_node");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
