@@ -1,6 +1,8 @@
 // planning_node: FK, IK, state checks and motion planning for every robot of a scene, as services
-// under /<robot>/; live joint states from /joint_states. Parameter ~scene: a shipped scene name or YAML.
+// under /<robot>/; live joint states from /joint_states. Parameters: ~scene (a shipped scene name or YAML
+// path), ~seed (OMPL's process seed, default 1).
 #include <memory>
+#include <ompl/util/RandomNumbers.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
 #include <tf2_ros/transform_listener.h>
@@ -20,6 +22,9 @@ int main(int argc, char** argv)
     ROS_FATAL("planning_node: parameter ~scene (scene name or YAML path) is required");
     return 2;
   }
+  int seed = 1;
+  private_nh.param("seed", seed, 1);
+  ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(seed));
   tf2_ros::Buffer tf;
   tf2_ros::TransformListener listener(tf);
   std::unique_ptr<vrrw_kinematics::SceneContext> context;

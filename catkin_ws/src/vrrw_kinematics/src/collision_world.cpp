@@ -3,6 +3,7 @@
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -41,6 +42,10 @@ std::string describe(const vrrw_scene::Shape& shape)
       << shape.length << " " << shape.mesh_path << " " << describe(shape.origin);
   return out.str();
 }
+
+/// Pairs more than two joint variables apart whose boxes came this close in some sample are not allowed
+/// as "never in collision": the samples cover their relative motion too sparsely to trust a near miss.
+constexpr double kNearMargin = 0.02;
 
 bool aabbOverlap(const Eigen::Vector3d& ca, const Eigen::Vector3d& ha, const Eigen::Vector3d& cb,
                  const Eigen::Vector3d& hb)
@@ -213,7 +218,7 @@ std::string CollisionWorld::contentKey(int samples, std::uint64_t seed) const
       hash = fnv1a(describe(shape), hash);
     }
   }
-  hash = fnv1a(std::to_string(samples) + " " + std::to_string(seed) + " acm-v1", hash);
+  hash = fnv1a(std::to_string(samples) + " " + std::to_string(seed) + " acm-v3", hash);
   char text[17];
   std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(hash));
   return text;
@@ -257,6 +262,7 @@ void CollisionWorld::computeAllowedCollisions(int samples, std::uint64_t seed)
       if (!acm.allowed(bodies_[i].name, bodies_[j].name))
         candidates.emplace_back(static_cast<int>(i), static_cast<int>(j));
   std::vector<int> hits(candidates.size(), 0);
+  std::vector<bool> near(candidates.size(), false);
   std::mt19937_64 rng(seed);
   Eigen::VectorXd variables(model_.variableCount());
   std::vector<Eigen::Isometry3d> body_poses;
@@ -280,11 +286,35 @@ void CollisionWorld::computeAllowedCollisions(int samples, std::uint64_t seed)
       bool collide = false;
       for (const int ea : bodies_[candidates[c].first].elements)
         for (const int eb : bodies_[candidates[c].second].elements)
+        {
+          const Eigen::Vector3d margin = Eigen::Vector3d::Constant(kNearMargin);
+          if (!aabbOverlap(centers[ea], halves[ea] + margin, centers[eb], halves[eb] + margin))
+            continue;
+          near[c] = true;
           if (!collide && aabbOverlap(centers[ea], halves[ea], centers[eb], halves[eb]))
             collide = elementsCollide(elements_[ea], element_poses[ea], elements_[eb], element_poses[eb]);
+        }
       hits[c] += collide ? 1 : 0;
     }
   }
+  const auto variablesBetween = [this](int a, int b) {
+    std::vector<int> variables;
+    const auto climb = [&](int from, int to) {
+      for (int l = from; l != to && l > 0; l = model_.links()[l].parent_link)
+      {
+        const JointModel& joint = model_.joints()[model_.links()[l].parent_joint];
+        const int v = joint.variable >= 0 ? joint.variable : joint.mimic_variable;
+        if (v >= 0 && std::find(variables.begin(), variables.end(), v) == variables.end())
+          variables.push_back(v);
+      }
+    };
+    int common = a;
+    while (common > 0 && !model_.isDescendant(b, common))
+      common = model_.links()[common].parent_link;
+    climb(a, common);
+    climb(b, common);
+    return variables.size();
+  };
   const auto fixed_in_world = [this](const CollisionBody& body) {
     for (int l = body.link; l > 0; l = model_.links()[l].parent_link)
       if (model_.joints()[model_.links()[l].parent_joint].moves())
@@ -298,7 +328,7 @@ void CollisionWorld::computeAllowedCollisions(int samples, std::uint64_t seed)
     const bool same_robot = !a.robot.empty() && a.robot == b.robot;
     if (hits[c] == samples && samples > 0 && (same_robot || (fixed_in_world(a) && fixed_in_world(b))))
       acm.allow(a.name, b.name, "always");
-    else if (hits[c] == 0 && samples > 0 && same_robot)
+    else if (samples > 0 && same_robot && hits[c] == 0 && (!near[c] || variablesBetween(a.link, b.link) <= 2))
       acm.allow(a.name, b.name, "never");
   }
   acm_ = acm;

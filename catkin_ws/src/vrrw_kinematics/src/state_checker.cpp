@@ -128,6 +128,10 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
     const int body_a = moving_body_of[elements[first].body];
     const int body_b = elements[second].body;
     const bool moving = slot_of[second] >= 0;
+    // Two elements on the same anchor never move relative to each other: decide them once, here.
+    if (moving && moving_elements_[slot_of[first]].anchor == moving_elements_[slot_of[second]].anchor &&
+        !elementsCollide(elements[first], static_poses_[first], elements[second], static_poses_[second]))
+      continue;
     BodyPair& entry = grouped[{ body_a, moving ? moving_body_of[body_b] : -1 - body_b }];
     entry.a = body_a;
     entry.b = moving ? moving_body_of[body_b] : body_b;

@@ -61,6 +61,18 @@ TEST(NumericIK, SolvesUr5eNumericallyToo)
   EXPECT_GE(roundTrip(chain, options, 200).success, 199);
 }
 
+TEST(NumericIK, FiveDofChainReachesItsOwnPoses)
+{
+  const KinematicChain chain = KinematicChain::fromUrdf(fixture("panda.urdf"), "panda_link0", "panda_link5");
+  ASSERT_EQ(chain.size(), 5u);
+  IkOptions options;
+  options.timeout = 0.02;
+  const Tally tally = roundTrip(chain, options, 200);
+  EXPECT_GE(tally.success, 198);
+  EXPECT_LE(tally.worst_position, 1e-5);
+  EXPECT_LE(tally.worst_orientation, 1e-5);
+}
+
 TEST(NumericIK, PositionOnlyOnPrismaticChain)
 {
   const KinematicChain chain = KinematicChain::fromUrdf(fixture("gantry.urdf"), "base", "tip");

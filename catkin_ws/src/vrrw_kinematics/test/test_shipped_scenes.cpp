@@ -56,6 +56,8 @@ TEST(ShippedScenes, FastCheckerAgreesWithFullCheckForEveryArm)
   CollisionWorld world = CollisionWorld::fromScene(multibot());
   world.loadOrComputeAllowedCollisions(multibot().cache_dir);
   EXPECT_GT(world.acm().count("adjacent"), 40u);
+  EXPECT_GT(world.acm().count("never"), 0u);  // e.g. Fetch's head and its wheels
+  EXPECT_EQ(world.acm().reason("fetch_head_tilt_link", "fetch_l_wheel_link"), "never");
   const Eigen::VectorXd initial = initialState(world.model(), multibot());
   EXPECT_FALSE(world.check(initial).collision) << world.check(initial).body_a << " - " << world.check(initial).body_b;
   for (const vrrw_scene::Robot& robot : multibot().robots)

@@ -77,13 +77,15 @@ public:
   void setAllowed(const std::string& a, const std::string& b, bool allowed);
 
   /// \brief Adjacent links, plus pairs never or always in collision over `samples` uniform random states
-  /// drawn with `seed`. "Never" applies within one robot only; "always" across robots and objects only
+  /// drawn with `seed`. "Never" applies within one robot only, and to pairs more than two joint variables
+  /// apart only when their bounding boxes never came within 2 cm (sparse samples; a near miss stays
+  /// checked); "always" across robots and objects only
   /// when both bodies are fixed in the world (a base on its table), so a movable link is always checked
   /// against other robots and objects.
-  void computeAllowedCollisions(int samples = 5000, std::uint64_t seed = 1);
+  void computeAllowedCollisions(int samples = 10000, std::uint64_t seed = 1);
   /// \brief Like computeAllowedCollisions, but reuses `<cache_dir>/acm_<key>.txt` when its content key
   /// matches; returns true when the cache was used.
-  bool loadOrComputeAllowedCollisions(const std::string& cache_dir, int samples = 5000, std::uint64_t seed = 1);
+  bool loadOrComputeAllowedCollisions(const std::string& cache_dir, int samples = 10000, std::uint64_t seed = 1);
   /// \brief Hash of the URDF, objects, attachments and sampling parameters.
   std::string contentKey(int samples, std::uint64_t seed) const;
 
