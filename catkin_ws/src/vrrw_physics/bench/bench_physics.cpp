@@ -40,6 +40,10 @@ int main(int argc, char** argv)
         mode = value;
       else if (arg == "--iterations")
         options.solver_iterations = std::stoi(value);
+      else if (arg == "--inner")
+        options.solver_inner_iterations = std::stoi(value);
+      else if (arg == "--residual")
+        options.solver_residual = std::stod(value);
       else if (arg == "--drives" && (value == "constraint" || value == "stable_pd"))
         options.drive_scheme =
             value == "constraint" ? vrrw_physics::DriveScheme::Constraint : vrrw_physics::DriveScheme::StablePd;
@@ -47,7 +51,7 @@ int main(int argc, char** argv)
       {
         std::cerr << "vrrw_bench_physics: unknown option " << arg
                   << " (--scene NAME --seconds S --dt DT --mode rigid|compliant --iterations N "
-                     "--drives constraint|stable_pd)\n";
+                     "--inner N --residual R --drives constraint|stable_pd)\n";
         return 2;
       }
     }
