@@ -1,9 +1,7 @@
 #include "vrrw_kinematics/motion_planner.h"
 
-#include <ompl/base/MotionValidator.h>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/SpaceInformation.h>
-#include <ompl/base/StateSampler.h>
 #include <ompl/base/goals/GoalStates.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
@@ -17,6 +15,9 @@
 
 #include "vrrw_kinematics/kinematics_error.h"
 #include "vrrw_kinematics/planner_factory.h"
+#include "ompl_state.h"
+#include "resolution_motion_validator.h"
+#include "seeded_state_sampler.h"
 
 namespace vrrw_kinematics
 {
@@ -29,98 +30,10 @@ using Clock = std::chrono::steady_clock;
 /// pick_place_drill (p95 plan time 14-17 ms at 2-3 rad against 25 ms at OMPL's default of ~6 rad).
 constexpr double kRange = 2.5;
 
-Eigen::VectorXd toEigen(const ob::State* state, std::size_t n)
-{
-  const double* values = state->as<ob::RealVectorStateSpace::StateType>()->values;
-  return Eigen::Map<const Eigen::VectorXd>(values, static_cast<Eigen::Index>(n));
-}
-
-void fromEigen(const Eigen::VectorXd& q, ob::State* state)
-{
-  double* values = state->as<ob::RealVectorStateSpace::StateType>()->values;
-  for (Eigen::Index i = 0; i < q.size(); ++i)
-    values[i] = q[i];
-}
-
 double seconds(Clock::time_point since)
 {
   return std::chrono::duration<double>(Clock::now() - since).count();
 }
-
-/// Uniform sampling from its own seeded generator, so a seeded query repeats.
-class SeededSampler : public ob::StateSampler
-{
-public:
-  SeededSampler(const ob::StateSpace* space, std::uint64_t seed) : ob::StateSampler(space), engine_(seed) {}
-
-  void sampleUniform(ob::State* state) override
-  {
-    const auto& bounds = space_->as<ob::RealVectorStateSpace>()->getBounds();
-    double* values = state->as<ob::RealVectorStateSpace::StateType>()->values;
-    for (std::size_t i = 0; i < bounds.low.size(); ++i)
-      values[i] = std::uniform_real_distribution<double>(bounds.low[i], bounds.high[i])(engine_);
-  }
-
-  void sampleUniformNear(ob::State* state, const ob::State* near, double distance) override
-  {
-    const auto& bounds = space_->as<ob::RealVectorStateSpace>()->getBounds();
-    double* values = state->as<ob::RealVectorStateSpace::StateType>()->values;
-    const double* center = near->as<ob::RealVectorStateSpace::StateType>()->values;
-    for (std::size_t i = 0; i < bounds.low.size(); ++i)
-      values[i] = std::uniform_real_distribution<double>(std::max(bounds.low[i], center[i] - distance),
-                                                         std::min(bounds.high[i], center[i] + distance))(engine_);
-  }
-
-  void sampleGaussian(ob::State* state, const ob::State* mean, double stdDev) override
-  {
-    const auto& bounds = space_->as<ob::RealVectorStateSpace>()->getBounds();
-    double* values = state->as<ob::RealVectorStateSpace::StateType>()->values;
-    const double* center = mean->as<ob::RealVectorStateSpace::StateType>()->values;
-    for (std::size_t i = 0; i < bounds.low.size(); ++i)
-      values[i] = std::min(bounds.high[i],
-                           std::max(bounds.low[i], std::normal_distribution<double>(center[i], stdDev)(engine_)));
-  }
-
-private:
-  std::mt19937_64 engine_;
-};
-
-/// OMPL motion checks at the planner's link-travel resolution.
-class ResolutionMotionValidator : public ob::MotionValidator
-{
-public:
-  ResolutionMotionValidator(const ob::SpaceInformationPtr& si, MotionPlanner& planner)
-    : ob::MotionValidator(si), planner_(planner)
-  {
-  }
-
-  bool checkMotion(const ob::State* s1, const ob::State* s2) const override
-  {
-    const std::size_t n = planner_.size();
-    const bool ok = planner_.segmentValid(toEigen(s1, n), toEigen(s2, n));
-    (ok ? valid_ : invalid_)++;
-    return ok;
-  }
-
-  bool checkMotion(const ob::State* s1, const ob::State* s2, std::pair<ob::State*, double>& last_valid) const override
-  {
-    const std::size_t n = planner_.size();
-    const Eigen::VectorXd a = toEigen(s1, n), b = toEigen(s2, n);
-    double fraction = 1.0;
-    const bool ok = planner_.segmentValid(a, b, &fraction);
-    if (!ok)
-    {
-      if (last_valid.first)
-        fromEigen(a + fraction * (b - a), last_valid.first);
-      last_valid.second = fraction;
-    }
-    (ok ? valid_ : invalid_)++;
-    return ok;
-  }
-
-private:
-  MotionPlanner& planner_;
-};
 }  // namespace
 
 MotionPlanner::MotionPlanner(const CollisionWorld& world, const std::vector<std::string>& joints,
@@ -156,7 +69,7 @@ MotionPlanner::MotionPlanner(const CollisionWorld& world, const std::vector<std:
   }
   space->setBounds(bounds);
   space->setStateSamplerAllocator(
-      [this](const ob::StateSpace* s) { return std::make_shared<SeededSampler>(s, sampler_seed_++); });
+      [this](const ob::StateSpace* s) { return std::make_shared<SeededStateSampler>(s, sampler_seed_++); });
   si_ = std::make_shared<ob::SpaceInformation>(space);
   const std::size_t n = joints.size();
   si_->setStateValidityChecker([this, n](const ob::State* state) { return checker_.valid(toEigen(state, n)); });

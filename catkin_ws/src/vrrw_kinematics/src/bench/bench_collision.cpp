@@ -50,11 +50,28 @@ int main(int argc, char** argv)
         in_collision += checker.valid(states[static_cast<std::size_t>(s) % states.size()]) ? 0 : 1;
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const double rate = static_cast<double>(samples) / seconds;
+      std::vector<Eigen::VectorXd> free_states;
+      for (const Eigen::VectorXd& q : states)
+        if (checker.valid(q))
+          free_states.push_back(q);
+      double free_rate = 0.0;
+      if (!free_states.empty())
+      {
+        const auto free_start = std::chrono::steady_clock::now();
+        long free_valid = 0;
+        for (long s = 0; s < samples; ++s)
+          free_valid += checker.valid(free_states[static_cast<std::size_t>(s) % free_states.size()]) ? 1 : 0;
+        free_rate = static_cast<double>(samples) /
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - free_start).count();
+        if (free_valid != samples)
+          throw std::runtime_error("checker is not deterministic");
+      }
       if (first_rate == 0.0)
         first_rate = rate;
-      std::cerr << robot.name << ": " << rate << " checks/s, " << checker.pairCount() << " pairs\n";
+      std::cerr << robot.name << ": " << rate << " checks/s (" << free_rate << " on collision-free states), "
+                << checker.pairCount() << " pairs\n";
       robots << (robots.tellp() > 0 ? ", " : "") << "\"" << robot.name << "\": {\"checks_per_s\": " << rate
-             << ", \"collision_fraction\": " << static_cast<double>(in_collision) / static_cast<double>(samples)
+             << ", \"free_checks_per_s\": " << free_rate << ", \"collision_fraction\": " << static_cast<double>(in_collision) / static_cast<double>(samples)
              << ", \"pairs\": " << checker.pairCount() << "}";
     }
     std::printf("{\"scene\": \"%s\", \"samples\": %ld, \"checks_per_s\": %.0f, \"acm_entries\": %zu, "
