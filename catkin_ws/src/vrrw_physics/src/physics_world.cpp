@@ -7,6 +7,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <LinearMath/btDefaultMotionState.h>
 
 #include <urdf_parser/urdf_parser.h>
@@ -186,6 +187,7 @@ bool PhysicsWorld::step()
     }
   }
   applySprings();
+  world_->getSolverInfo().m_numNonContactInnerIterations = robotInContact() ? options_.solver_inner_iterations : 1;
   world_->stepSimulation(btScalar(options_.dt), 0, btScalar(options_.dt));
   for (RobotEntry& e : robots_)
     e.robot->refreshFrames();
@@ -199,6 +201,19 @@ bool PhysicsWorld::step()
   if (options_.snapshot_interval > 0 && steps_ % std::uint64_t(options_.snapshot_interval) == 0)
     last_good_ = snapshot();
   return true;
+}
+
+bool PhysicsWorld::robotInContact() const
+{
+  btDispatcher* dispatcher = world_->getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
+  {
+    const btPersistentManifold* manifold = dispatcher->getInternalManifoldPointer()[m];
+    if (manifold->getNumContacts() > 0 && (btMultiBodyLinkCollider::upcast(manifold->getBody0()) ||
+                                           btMultiBodyLinkCollider::upcast(manifold->getBody1())))
+      return true;
+  }
+  return false;
 }
 
 bool PhysicsWorld::stateIsSane()

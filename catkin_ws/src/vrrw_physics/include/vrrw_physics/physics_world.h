@@ -49,6 +49,7 @@ struct WorldOptions
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);
   int solver_iterations = 30;        ///< most Gauss-Seidel sweeps per step
   int solver_inner_iterations = 5;  ///< sweeps over joint rows (drives, couplings, limits) per sweep
+                                     ///< while a robot link touches something (1 otherwise)
   double solver_residual = 1e-9;     ///< stop sweeping when the squared impulse change falls below
   bool gravity_compensation = true;  ///< feed-forward torques cancelling gravity on each robot
   double link_friction = 1.0;
@@ -166,6 +167,7 @@ private:
   void applyMode(RobotEntry& e);
   void applySprings();
   bool stateIsSane();
+  bool robotInContact() const;
   bool frameExists(const std::string& frame) const;
 
   WorldOptions options_;
