@@ -23,7 +23,7 @@ bool reply(Response& res, const KinematicsError& error)
 }
 }  // namespace
 
-RobotServices::RobotServices(ros::NodeHandle& nh, const vrrw_scene::Robot& robot, const SceneContext& context)
+RobotServices::RobotServices(ros::NodeHandle& nh, const vrrw_scene::Robot& robot, SceneContext& context)
   : robot_(robot), context_(context)
 {
   const RobotModel& model = context.world().model();
@@ -46,6 +46,7 @@ RobotServices::RobotServices(ros::NodeHandle& nh, const vrrw_scene::Robot& robot
   servers_.push_back(nh.advertiseService(ns + "compute_ik", &RobotServices::computeIk, this));
   servers_.push_back(nh.advertiseService(ns + "check_state", &RobotServices::checkState, this));
   servers_.push_back(nh.advertiseService(ns + "plan", &RobotServices::plan, this));
+  servers_.push_back(nh.advertiseService(ns + "attach_object", &RobotServices::attachObject, this));
 }
 
 std::string RobotServices::linkOrTcp(const std::string& link) const
@@ -106,6 +107,7 @@ bool RobotServices::computeIk(vrrw_msgs::ComputeIK::Request& req, vrrw_msgs::Com
 {
   try
   {
+    context_.refreshObjects();
     Eigen::VectorXd state = context_.overlay(req.seed);
     const IkSolver& solver = solverFor(linkOrTcp(req.link));
     const Eigen::Isometry3d target =
@@ -169,6 +171,7 @@ bool RobotServices::checkState(vrrw_msgs::CheckState::Request& req, vrrw_msgs::C
 {
   try
   {
+    context_.refreshObjects();
     const Eigen::VectorXd state = context_.overlay(req.joint_state);
     const RobotModel& model = context_.world().model();
     res.within_limits = true;
@@ -206,6 +209,7 @@ bool RobotServices::plan(vrrw_msgs::Plan::Request& req, vrrw_msgs::Plan::Respons
 {
   try
   {
+    context_.refreshObjects();
     const Eigen::VectorXd state = context_.overlay(req.start);
     MotionPlanner planner(context_.world(), robot_.arm_joints, linkOrTcp(req.link), state);
     PlanRequest request;
@@ -253,6 +257,33 @@ bool RobotServices::plan(vrrw_msgs::Plan::Request& req, vrrw_msgs::Plan::Respons
     res.error_code = 0;
     res.message = "planned in " + std::to_string(result.planning_time * 1e3) + " ms, " +
                   std::to_string(trajectory.duration()) + " s of motion";
+    return true;
+  }
+  catch (const KinematicsError& e)
+  {
+    return reply(res, e);
+  }
+}
+
+bool RobotServices::attachObject(vrrw_msgs::AttachObject::Request& req, vrrw_msgs::AttachObject::Response& res)
+{
+  try
+  {
+    const int b = context_.world().bodyIndex(req.object);
+    if (b < 0 || !context_.world().bodies()[b].object)
+      throw KinematicsError(ErrorCode::InvalidArgument, "object " + req.object + ": not a scene object");
+    if (req.attach)
+    {
+      context_.refreshObjects();
+      context_.attach(req.object, linkOrTcp(req.link), robot_.tool_link);
+      res.message = req.object + " attached to " + linkOrTcp(req.link);
+    }
+    else
+    {
+      context_.detach(req.object);
+      res.message = req.object + " detached";
+    }
+    res.error_code = 0;
     return true;
   }
   catch (const KinematicsError& e)

@@ -2,6 +2,7 @@
 #include <map>
 #include <memory>
 #include <ros/ros.h>
+#include <vrrw_msgs/AttachObject.h>
 #include <vrrw_msgs/CheckState.h>
 #include <vrrw_msgs/ComputeFK.h>
 #include <vrrw_msgs/ComputeIK.h>
@@ -13,17 +14,18 @@
 
 namespace vrrw_kinematics
 {
-/// \brief compute_fk, compute_ik, check_state and plan for one robot of the scene, under /<robot>/.
+/// \brief compute_fk, compute_ik, check_state, plan and attach_object for one robot, under /<robot>/.
 class RobotServices
 {
 public:
-  RobotServices(ros::NodeHandle& nh, const vrrw_scene::Robot& robot, const SceneContext& context);
+  RobotServices(ros::NodeHandle& nh, const vrrw_scene::Robot& robot, SceneContext& context);
 
 private:
   bool computeFk(vrrw_msgs::ComputeFK::Request& req, vrrw_msgs::ComputeFK::Response& res);
   bool computeIk(vrrw_msgs::ComputeIK::Request& req, vrrw_msgs::ComputeIK::Response& res);
   bool checkState(vrrw_msgs::CheckState::Request& req, vrrw_msgs::CheckState::Response& res);
   bool plan(vrrw_msgs::Plan::Request& req, vrrw_msgs::Plan::Response& res);
+  bool attachObject(vrrw_msgs::AttachObject::Request& req, vrrw_msgs::AttachObject::Response& res);
 
   const IkSolver& solverFor(const std::string& link);
   Eigen::VectorXd armValues(const Eigen::VectorXd& state) const;
@@ -31,7 +33,7 @@ private:
   std::string linkOrTcp(const std::string& link) const;
 
   vrrw_scene::Robot robot_;
-  const SceneContext& context_;
+  SceneContext& context_;
   std::string arm_base_;
   std::vector<int> arm_variables_;
   std::map<std::string, std::unique_ptr<IkSolver>> solvers_;

@@ -24,6 +24,40 @@ void SceneContext::updateLive(const sensor_msgs::JointState& msg)
   }
 }
 
+void SceneContext::refreshObjects()
+{
+  const std::string& root = world_.model().links()[0].name;
+  for (const vrrw_scene::Object& object : scene_.objects)
+  {
+    const int b = world_.bodyIndex(object.name);
+    if (b < 0 || world_.bodies()[b].link >= 0 || !tf_.canTransform(root, object.name, ros::Time(0)))
+      continue;
+    try
+    {
+      world_.setObjectPose(object.name, tf2::transformToEigen(tf_.lookupTransform(root, object.name, ros::Time(0))));
+    }
+    catch (const tf2::TransformException&)
+    {
+    }
+  }
+}
+
+void SceneContext::attach(const std::string& object, const std::string& link, const std::string& gripper_root)
+{
+  const RobotModel& model = world_.model();
+  const int root = model.linkIndex(gripper_root);
+  std::vector<std::string> touch;
+  for (std::size_t l = 0; l < model.links().size(); ++l)
+    if (model.isDescendant(static_cast<int>(l), root))
+      touch.push_back(model.links()[l].name);
+  world_.attachObject(object, link, live_, touch);
+}
+
+void SceneContext::detach(const std::string& object)
+{
+  world_.detachObject(object, live_);
+}
+
 Eigen::VectorXd SceneContext::overlay(const sensor_msgs::JointState& msg) const
 {
   if (msg.name.size() != msg.position.size())

@@ -19,6 +19,12 @@ public:
 
   const vrrw_scene::Scene& scene() const { return scene_; }
   const CollisionWorld& world() const { return world_; }
+  /// \brief Moves every free scene object to its live tf pose (world -> object), when tf has one.
+  void refreshObjects();
+  /// \brief Attaches `object` to `link` at the live state; the links below `gripper_root` may touch it.
+  void attach(const std::string& object, const std::string& link, const std::string& gripper_root);
+  /// \brief Frees an attached object where the live state puts it.
+  void detach(const std::string& object);
   const Eigen::VectorXd& liveState() const { return live_; }
   /// \brief Takes the positions of known joints from a joint_states message.
   void updateLive(const sensor_msgs::JointState& msg);

@@ -4,6 +4,7 @@
 #include "scene_fixtures.h"
 #include "vrrw_kinematics/kinematics_error.h"
 #include "vrrw_kinematics/motion_planner.h"
+#include "vrrw_kinematics/time_parameterization.h"
 
 using namespace vrrw_kinematics;
 
@@ -75,6 +76,25 @@ TEST_F(MotionPlannerTest, JointGoalAroundAnObstacle)
   EXPECT_NEAR(result.path_length, pathLength(result.path), 1e-12);
   EXPECT_GT(result.path_length, (goal_ - start_).norm());
   expectPathCollisionFree(result.path);
+}
+
+TEST_F(MotionPlannerTest, TimedTrajectoryFollowsTheCheckedPath)
+{
+  PlanRequest request;
+  request.start = start_;
+  request.goal_joints = goal_;
+  const PlanResult result = planner_->plan(request);
+  ASSERT_TRUE(result.success) << result.message;
+  TimingOptions timing;
+  timing.max_velocity.assign(6, M_PI);
+  timing.max_acceleration.assign(6, M_PI);
+  timing.max_deviation = 0.0;
+  const auto exact = TimeParameterization(timing).compute(result.path, kJoints);
+  EXPECT_TRUE(planner_->trajectoryValid(exact));
+  EXPECT_LT((Eigen::Map<const Eigen::VectorXd>(exact.points.back().positions.data(), 6) - goal_).norm(), 1e-12);
+  vrrw_trajectory::JointTrajectory outside = exact;
+  outside.points[outside.points.size() / 2].positions[2] = 4.0;
+  EXPECT_FALSE(planner_->trajectoryValid(outside));
 }
 
 TEST_F(MotionPlannerTest, PoseGoalThroughIk)

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <vrrw_msgs/AttachObject.h>
 #include <vrrw_msgs/CheckState.h>
 #include <vrrw_msgs/ComputeFK.h>
 #include <vrrw_msgs/ComputeIK.h>
@@ -164,6 +165,30 @@ TEST(PlanningNode, BadRequestsGetCodesAndTheNodeStaysUp)
 
   vrrw_msgs::CheckState still_up;
   EXPECT_TRUE(ros::service::call("/ur5e/check_state", still_up));
+}
+
+TEST(PlanningNode, AttachAndDetachAnObject)
+{
+  vrrw_msgs::AttachObject attach;
+  attach.request.object = "drill";
+  attach.request.attach = true;
+  attach = call("/ur5e/attach_object", attach);
+  EXPECT_EQ(attach.response.error_code, 0) << attach.response.message;
+
+  vrrw_msgs::CheckState holding;  // the drill hangs from the tcp wherever it went when attached
+  holding = call("/ur5e/check_state", holding);
+  EXPECT_EQ(holding.response.error_code == 0 || holding.response.error_code == 7, true);
+
+  vrrw_msgs::AttachObject detach;
+  detach.request.object = "drill";
+  detach = call("/ur5e/attach_object", detach);
+  EXPECT_EQ(detach.response.error_code, 0) << detach.response.message;
+  EXPECT_EQ(call("/ur5e/attach_object", detach).response.error_code, 9);
+
+  vrrw_msgs::AttachObject unknown;
+  unknown.request.object = "no_such_object";
+  unknown.request.attach = true;
+  EXPECT_EQ(call("/ur5e/attach_object", unknown).response.error_code, 9);
 }
 
 int main(int argc, char** argv)
