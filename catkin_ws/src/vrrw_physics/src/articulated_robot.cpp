@@ -327,17 +327,7 @@ ArticulatedRobot::~ArticulatedRobot()
 {
   if (!world_)
     return;
-  for (auto& c : couplings_)
-    world_->removeMultiBodyConstraint(c.get());
-  if (drive_constraints_)
-  {
-    for (auto& d : drives_)
-      world_->removeMultiBodyConstraint(d.get());
-    for (auto& d : mimic_drives_)
-      world_->removeMultiBodyConstraint(d.get());
-  }
-  if (limits_)
-    world_->removeMultiBodyConstraint(limits_.get());
+  world_->removeMultiBodyConstraint(rows_.get());
   for (auto& c : colliders_)
     world_->removeCollisionObject(c.get());
   world_->removeMultiBody(body_.get());
@@ -358,17 +348,20 @@ void ArticulatedRobot::addToWorld(btMultiBodyDynamicsWorld* world, bool drive_co
                            : 0;
     world->addCollisionObject(c.get(), solid ? group : 0, mask);
   }
+  // Row order matters to Gauss-Seidel: drives before the couplings they feed converge fastest.
+  rows_ = std::make_unique<JointRowGroup>(body_.get());
   if (limits_)
-    world->addMultiBodyConstraint(limits_.get());
-  for (auto& c : couplings_)
-    world->addMultiBodyConstraint(c.get());
+    rows_->add(limits_.get());
   if (drive_constraints)
   {
     for (auto& d : drives_)
-      world->addMultiBodyConstraint(d.get());
+      rows_->add(d.get());
     for (auto& d : mimic_drives_)
-      world->addMultiBodyConstraint(d.get());
+      rows_->add(d.get());
   }
+  for (auto& c : couplings_)
+    rows_->add(c.get());
+  world->addMultiBodyConstraint(rows_.get());
 }
 
 int ArticulatedRobot::jointIndex(const std::string& joint) const

@@ -1,6 +1,7 @@
 #pragma once
 #include <vrrw_physics/joint_drive.h>
 #include <vrrw_physics/joint_limits.h>
+#include <vrrw_physics/joint_row_group.h>
 #include <vrrw_physics/joint_space_inertia.h>
 
 #include <Eigen/Geometry>
@@ -134,6 +135,7 @@ private:
   std::vector<std::unique_ptr<JointCoupling>> couplings_;
   std::vector<std::unique_ptr<JointDrive>> mimic_drives_;
   std::unique_ptr<JointLimits> limits_;
+  std::unique_ptr<JointRowGroup> rows_;  ///< what Bullet sees of the above
   std::vector<SimJoint> joints_;
   std::vector<double> feed_forward_;
   std::vector<int> coupling_of_joint_;
