@@ -97,6 +97,24 @@ TEST_F(MotionPlannerTest, TimedTrajectoryFollowsTheCheckedPath)
   EXPECT_FALSE(planner_->trajectoryValid(outside));
 }
 
+TEST_F(MotionPlannerTest, SameSeedSamePath)
+{
+  for (const bool simplify : { false, true })
+  {
+    PlanRequest request;
+    request.start = start_;
+    request.goal_joints = goal_;
+    request.seed = 42;
+    request.simplify = simplify;
+    const PlanResult first = planner_->plan(request);
+    const PlanResult second = planner_->plan(request);
+    ASSERT_TRUE(first.success && second.success);
+    ASSERT_EQ(first.path.size(), second.path.size()) << "simplify " << simplify;
+    for (std::size_t i = 0; i < first.path.size(); ++i)
+      EXPECT_LT((first.path[i] - second.path[i]).norm(), 1e-12) << "simplify " << simplify;
+  }
+}
+
 TEST_F(MotionPlannerTest, PoseGoalThroughIk)
 {
   const Eigen::Isometry3d target = planner_->ik().chain().fk(goal_);

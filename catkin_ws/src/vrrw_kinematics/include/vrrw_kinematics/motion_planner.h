@@ -84,6 +84,10 @@ private:
   PlanResult fail(ErrorCode code, const std::string& message) const;
   std::string limitViolation(const Eigen::VectorXd& q) const;
   bool goalStates(const PlanRequest& request, double budget, std::vector<Eigen::VectorXd>& goals, PlanResult& error);
+  /// \brief Drops every waypoint a straight valid segment can skip (greedy, farthest first).
+  void reduceVertices(std::vector<Eigen::VectorXd>& path);
+  /// \brief reduceVertices, then seeded random shortcuts between points on the path, then reduceVertices.
+  void simplify(std::vector<Eigen::VectorXd>& path, std::uint64_t seed);
 
   StateChecker checker_;
   std::vector<std::string> joint_names_;
