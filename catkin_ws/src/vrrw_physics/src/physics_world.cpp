@@ -7,6 +7,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyFixedConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <LinearMath/btDefaultMotionState.h>
 
@@ -38,6 +39,15 @@ btTransform toBullet(const Eigen::Isometry3d& t)
   const Eigen::Vector3d p = t.translation();
   return btTransform(btQuaternion(btScalar(q.x()), btScalar(q.y()), btScalar(q.z()), btScalar(q.w())),
                      btVector3(btScalar(p.x()), btScalar(p.y()), btScalar(p.z())));
+}
+
+Eigen::Matrix4d toEigenTransform(const btTransform& t)
+{
+  Eigen::Isometry3d e = Eigen::Isometry3d::Identity();
+  const btQuaternion q = t.getRotation();
+  e.translate(Eigen::Vector3d(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z()));
+  e.rotate(Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()));
+  return e.matrix();
 }
 
 void requireFinite(double value, const std::string& what)
@@ -142,6 +152,9 @@ PhysicsWorld::PhysicsWorld(const vrrw_scene::Scene& scene, const WorldOptions& o
 
 PhysicsWorld::~PhysicsWorld()
 {
+  for (auto& a : assists_)
+    world_->removeMultiBodyConstraint(a.second.get());
+  assists_.clear();
   removeHand();
   objects_.clear();
   robots_.clear();
@@ -492,6 +505,46 @@ void PhysicsWorld::applySprings()
   }
 }
 
+void PhysicsWorld::setGraspAssist(const std::string& robot, const std::string& object, bool on)
+{
+  RobotEntry& e = entry(robot);
+  RigidObject& o = this->object(object);
+  const std::string key = robot + "/" + object;
+  const auto existing = assists_.find(key);
+  if (existing != assists_.end())
+  {
+    world_->removeMultiBodyConstraint(existing->second.get());
+    assists_.erase(existing);
+  }
+  if (!on)
+    return;
+  if (o.fixed())
+    throw InputError("grasp assist: object '" + object + "' is fixed");
+  const std::string tcp = e.spec.tcp_link.empty() ? robot + "_tool0" : e.spec.tcp_link;
+  if (!e.robot->hasLink(tcp))
+    throw InputError("grasp assist: robot " + robot + " has no link '" + tcp + "'");
+  const int link = e.robot->bulletLink(tcp);
+  if (link < 0)
+    throw InputError("grasp assist: '" + tcp + "' is fixed to the base of " + robot);
+  const Eigen::Isometry3d link_T_object = e.robot->bodyPose(link).inverse() *
+                                          Eigen::Isometry3d(toEigenTransform(o.body()->getWorldTransform()));
+  const btTransform in_link = toBullet(link_T_object);
+  auto weld = std::make_unique<btMultiBodyFixedConstraint>(e.robot->body(), link, o.body(), in_link.getOrigin(),
+                                                           btVector3(0, 0, 0), in_link.getBasis(),
+                                                           btMatrix3x3::getIdentity());
+  weld->setMaxAppliedImpulse(btScalar(1e3 * options_.dt));
+  world_->addMultiBodyConstraint(weld.get());
+  assists_[key] = std::move(weld);
+}
+
+std::vector<std::string> PhysicsWorld::graspAssists() const
+{
+  std::vector<std::string> keys;
+  for (const auto& a : assists_)
+    keys.push_back(a.first);
+  return keys;
+}
+
 void PhysicsWorld::setHandPose(const Eigen::Isometry3d& pose, double radius)
 {
   if (!pose.matrix().allFinite() || !(radius > 0.0))
@@ -568,6 +621,9 @@ void PhysicsWorld::restore(const WorldState& s)
 void PhysicsWorld::reset()
 {
   springs_.clear();
+  for (auto& a : assists_)
+    world_->removeMultiBodyConstraint(a.second.get());
+  assists_.clear();
   removeHand();
   restore(initial_);
   last_good_ = initial_;

@@ -226,3 +226,44 @@ TEST(PhysicsWorld, ResetReturnsToTheInitialState)
   EXPECT_EQ(world.snapshot().positions, start.positions);
   EXPECT_LT((world.objectPose("drill").translation() - start.object_poses[1].translation()).norm(), 1e-6);
 }
+
+TEST(PhysicsWorld, KinematicHandPushesAnObjectByContact)
+{
+  PhysicsWorld world(scene("pick_place_drill"));
+  EXPECT_TRUE(world.graspAssists().empty());  // grasp assist is off unless asked for
+  const Eigen::Vector3d drill = world.objectPose("drill").translation();
+  // Sweep a 4 cm sphere along +y through the drill's battery, 3 cm above the table, at 0.3 m/s.
+  const Eigen::Vector3d from = drill + Eigen::Vector3d(0, -0.15, 0.03);
+  for (int i = 0; i <= 1000; ++i)
+  {
+    world.setHandPose(Eigen::Isometry3d(Eigen::Translation3d(from + Eigen::Vector3d(0, 0.3 * i * 1e-3, 0))));
+    ASSERT_TRUE(world.step()) << world.lastError();
+  }
+  const double pushed = world.objectPose("drill").translation().y() - drill.y();
+  std::cout << "hand: swept 0.3 m, the drill moved " << pushed << " m along the sweep\n";
+  EXPECT_GT(pushed, 0.05);
+  world.removeHand();
+  ASSERT_TRUE(world.step());
+}
+
+TEST(PhysicsWorld, GraspAssistWeldsTheObjectToTheTcpWhenAsked)
+{
+  vrrw_scene::Scene cell = scene("pick_place_drill");
+  PhysicsWorld world(cell);
+  const Eigen::Isometry3d tcp = world.framePose("ur5e_tcp");
+  Eigen::Isometry3d place = Eigen::Isometry3d::Identity();
+  place.translation() = tcp.translation() - Eigen::Vector3d(0, 0, 0.25);  // below the open fingers, in free space
+  world.setObjectPose("drill", place);
+  world.setGraspAssist("ur5e", "drill", true);
+  EXPECT_EQ(world.graspAssists(), std::vector<std::string>{ "ur5e/drill" });
+  const Eigen::Isometry3d held = world.framePose("ur5e_tcp").inverse() * world.objectPose("drill");
+  world.setDriveTargets("ur5e", { "ur5e_shoulder_pan_joint" }, { 0.3 }, {});
+  for (int i = 0; i < 2000; ++i)
+    ASSERT_TRUE(world.step()) << world.lastError();
+  const Eigen::Isometry3d now = world.framePose("ur5e_tcp").inverse() * world.objectPose("drill");
+  EXPECT_LT((now.translation() - held.translation()).norm(), 2e-3);
+  EXPECT_GT(std::abs(world.jointStates("ur5e").position[0]), 0.1);
+  world.setGraspAssist("ur5e", "drill", false);
+  EXPECT_TRUE(world.graspAssists().empty());
+  EXPECT_THROW(world.setGraspAssist("ur5e", "table", true), InputError);
+}

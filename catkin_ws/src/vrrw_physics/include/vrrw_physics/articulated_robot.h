@@ -92,6 +92,8 @@ public:
   bool hasLink(const std::string& link) const { return links_.count(link) > 0; }
   /// \brief World pose of a URDF link (merged links included); throws for an unknown link.
   Eigen::Isometry3d linkPose(const std::string& link) const;
+  /// \brief Bullet link index carrying a URDF link (-1: the base); throws for an unknown link.
+  int bulletLink(const std::string& link) const { return linkFrame(link).body; }
   /// \brief World velocity of a point given in a link's frame.
   Eigen::Vector3d pointVelocity(const std::string& link, const Eigen::Vector3d& point) const;
   /// \brief World angular velocity of a link.

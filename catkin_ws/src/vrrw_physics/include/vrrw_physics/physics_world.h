@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,7 @@ class btMultiBodyConstraintSolver;
 class btMultiBodyDynamicsWorld;
 class btRigidBody;
 class btCollisionShape;
+class btMultiBodyConstraint;
 struct btDefaultMotionState;
 
 namespace vrrw_physics
@@ -132,6 +134,12 @@ public:
                   const Eigen::Vector3d& velocity = Eigen::Vector3d::Zero());
   void releaseSpring(const std::string& id);
 
+  /// \brief Grasp assist (off unless asked for): welds `object` to the robot's TCP link where it is
+  /// now, or releases it. For scripted demos that must not drop anything; grasping tests run without.
+  void setGraspAssist(const std::string& robot, const std::string& object, bool on);
+  /// \brief "robot/object" of every active grasp assist.
+  std::vector<std::string> graspAssists() const;
+
   /// \brief Places the kinematic hand (a sphere that pushes links and objects by contact); it is
   /// created on first use and moves with the velocity implied by successive poses.
   void setHandPose(const Eigen::Isometry3d& pose, double radius = 0.04);
@@ -179,6 +187,7 @@ private:
   std::vector<RobotEntry> robots_;
   std::vector<std::unique_ptr<RigidObject>> objects_;
   std::vector<SpringEntry> springs_;
+  std::map<std::string, std::unique_ptr<btMultiBodyConstraint>> assists_;
   std::unique_ptr<btCollisionShape> hand_shape_;
   std::unique_ptr<btDefaultMotionState> hand_motion_;
   std::unique_ptr<btRigidBody> hand_;
