@@ -249,6 +249,9 @@ ArticulatedRobot::ArticulatedRobot(const urdf::ModelInterface& model, const std:
     }
     joints_.push_back(sim);
   }
+  if (joints_.size() > std::size_t(kMaxJoints))
+    throw std::runtime_error("robot " + name + ": " + std::to_string(joints_.size()) + " movable joints, at most " +
+                             std::to_string(kMaxJoints) + " supported");
   body_->finalizeMultiDof();
   body_->setLinearDamping(0);
   body_->setAngularDamping(0);
@@ -466,7 +469,7 @@ void ArticulatedRobot::refreshFrames()
   }
 }
 
-const Eigen::MatrixXd& ArticulatedRobot::updateDynamics()
+const JointMatrix& ArticulatedRobot::updateDynamics()
 {
   inertia_ = jointSpaceInertia(*this);
   response_.setInertia(inertia_);

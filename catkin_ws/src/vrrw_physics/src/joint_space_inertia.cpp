@@ -27,7 +27,7 @@ Eigen::Vector3d toEigen(const btVector3& v)
 }
 }  // namespace
 
-Eigen::MatrixXd jointSpaceInertia(const ArticulatedRobot& robot)
+JointMatrix jointSpaceInertia(const ArticulatedRobot& robot)
 {
   const btMultiBody& body = *robot.body();
   const std::size_t n_links = static_cast<std::size_t>(body.getNumLinks());
@@ -67,7 +67,7 @@ Eigen::MatrixXd jointSpaceInertia(const ArticulatedRobot& robot)
   for (std::size_t j = 0; j < joints.size(); ++j)
     joint_of_link[std::size_t(joints[j].link)] = int(j);
   const Eigen::Index n = Eigen::Index(joints.size());
-  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
+  JointMatrix m = JointMatrix::Zero(n, n);
   for (std::size_t k = 0; k < n_links; ++k)
   {
     const int j = joint_of_link[k];
@@ -87,18 +87,18 @@ Eigen::MatrixXd jointSpaceInertia(const ArticulatedRobot& robot)
   return m;
 }
 
-void JointSpaceResponse::setInertia(const Eigen::MatrixXd& inertia)
+void JointSpaceResponse::setInertia(const JointMatrix& inertia)
 {
   inertia_ = &inertia;
   inverted_ = false;
   valid_ = inertia.allFinite();
 }
 
-const Eigen::MatrixXd& JointSpaceResponse::inverse() const
+const JointMatrix& JointSpaceResponse::inverse() const
 {
   if (!inverted_)
   {
-    inverse_ = inertia_->ldlt().solve(Eigen::MatrixXd::Identity(inertia_->rows(), inertia_->cols()));
+    inverse_ = inertia_->llt().solve(JointMatrix::Identity(inertia_->rows(), inertia_->cols()));
     inverted_ = true;
   }
   return inverse_;
@@ -136,7 +136,7 @@ double fillJointRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& d
     jacobian[6 + dof_b] += btScalar(coeff_b);
   const int ja = response.joint_of_dof[std::size_t(dof_a)];
   const int jb = dof_b >= 0 ? response.joint_of_dof[std::size_t(dof_b)] : -1;
-  const Eigen::MatrixXd& inverse = response.inverse();
+  const JointMatrix& inverse = response.inverse();
   double denominator = 0.0;
   for (int d = 0; d < size - 6; ++d)
   {

@@ -181,7 +181,7 @@ bool PhysicsWorld::step()
 {
   for (RobotEntry& e : robots_)
   {
-    const Eigen::MatrixXd& inertia = e.robot->updateDynamics();
+    const JointMatrix& inertia = e.robot->updateDynamics();
     e.robot->followMasters();
     e.robot->clearFeedForward();
     std::vector<double> external = e.robot->gravityTorques(options_.gravity);

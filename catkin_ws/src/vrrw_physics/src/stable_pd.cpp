@@ -18,7 +18,7 @@ StablePd::StablePd(const ArticulatedRobot& robot) : robot_(robot)
       reduced[j] = int(driven_.size());
       driven_.push_back(int(j));
     }
-  reduction_ = Eigen::MatrixXd::Zero(Eigen::Index(joints.size()), Eigen::Index(driven_.size()));
+  reduction_ = JointMatrix::Zero(Eigen::Index(joints.size()), Eigen::Index(driven_.size()));
   for (std::size_t j = 0; j < joints.size(); ++j)
   {
     int master = int(j);
@@ -33,7 +33,7 @@ StablePd::StablePd(const ArticulatedRobot& robot) : robot_(robot)
   }
 }
 
-std::vector<double> StablePd::torques(double h, const Eigen::MatrixXd& full, const std::vector<double>& external) const
+std::vector<double> StablePd::torques(double h, const JointMatrix& full, const std::vector<double>& external) const
 {
   const auto& joints = robot_.joints();
   const Eigen::Index n = Eigen::Index(driven_.size());
@@ -42,11 +42,11 @@ std::vector<double> StablePd::torques(double h, const Eigen::MatrixXd& full, con
     return tau;
   const std::vector<double> q = robot_.positions();
   const std::vector<double> qd = robot_.velocities();
-  const Eigen::VectorXd velocity = Eigen::Map<const Eigen::VectorXd>(qd.data(), Eigen::Index(qd.size()));
-  Eigen::MatrixXd a = reduction_.transpose() * full * reduction_;
-  const Eigen::VectorXd forces = Eigen::Map<const Eigen::VectorXd>(external.data(), Eigen::Index(external.size()));
-  Eigen::VectorXd rhs = reduction_.transpose() * (full * velocity + h * forces);
-  Eigen::VectorXd bias(n), gain(n);
+  const JointVector velocity = Eigen::Map<const Eigen::VectorXd>(qd.data(), Eigen::Index(qd.size()));
+  JointMatrix a = reduction_.transpose() * full * reduction_;
+  const JointVector forces = Eigen::Map<const Eigen::VectorXd>(external.data(), Eigen::Index(external.size()));
+  JointVector rhs = reduction_.transpose() * (full * velocity + h * forces);
+  JointVector bias(n), gain(n);
   for (Eigen::Index r = 0; r < n; ++r)
   {
     const int j = driven_[std::size_t(r)];
@@ -57,7 +57,7 @@ std::vector<double> StablePd::torques(double h, const Eigen::MatrixXd& full, con
     a(r, r) += h * gain(r);
     rhs(r) += h * bias(r);
   }
-  const Eigen::VectorXd x = a.ldlt().solve(rhs);
+  const JointVector x = a.ldlt().solve(rhs);
   for (Eigen::Index r = 0; r < n; ++r)
   {
     const int j = driven_[std::size_t(r)];

@@ -115,7 +115,7 @@ public:
   void refreshFrames();
   /// \brief The joint-space inertia M of the configuration (as of refreshFrames()), whose inverse
   /// the robot's solver rows use this step. Returns M.
-  const Eigen::MatrixXd& updateDynamics();
+  const JointMatrix& updateDynamics();
   /// \brief Forgets the feed-forward torques reported by efforts() (Bullet clears applied torques each step).
   void clearFeedForward();
 
@@ -143,7 +143,7 @@ private:
   std::vector<int> coupling_of_joint_;
   std::map<std::string, LinkFrame> links_;
   std::vector<Eigen::Isometry3d> poses_;
-  Eigen::MatrixXd inertia_;
+  JointMatrix inertia_;
   JointSpaceResponse response_;
   btMultiBodyDynamicsWorld* world_ = nullptr;
   bool drive_constraints_ = true;

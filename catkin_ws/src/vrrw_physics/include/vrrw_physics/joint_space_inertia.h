@@ -10,10 +10,15 @@ namespace vrrw_physics
 {
 class ArticulatedRobot;
 
+/// \brief Most movable joints of one robot (storage of joint-space matrices is fixed, no heap).
+constexpr int kMaxJoints = 32;
+using JointMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxJoints, kMaxJoints>;
+using JointVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxJoints, 1>;
+
 /// \brief Joint-space inertia M of a fixed-base robot (order of ArticulatedRobot::joints()) by the
 /// composite rigid body algorithm on its current link frames. Featherstone, "Rigid Body Dynamics
 /// Algorithms", 2008, ch. 6.
-Eigen::MatrixXd jointSpaceInertia(const ArticulatedRobot& robot);
+JointMatrix jointSpaceInertia(const ArticulatedRobot& robot);
 
 /// \brief M^-1 of one robot for the current step, so solver rows on joint coordinates need no
 /// articulated-body pass each (Bullet's fillMultiBodyConstraint does two per row).
@@ -21,17 +26,17 @@ class JointSpaceResponse
 {
 public:
   /// \brief M of the current configuration; its inverse is computed on first use.
-  void setInertia(const Eigen::MatrixXd& inertia);
+  void setInertia(const JointMatrix& inertia);
   void invalidate() { valid_ = false; }
   /// \brief false: rows fall back to Bullet's own fill.
   bool valid() const { return valid_; }
-  const Eigen::MatrixXd& inverse() const;
+  const JointMatrix& inverse() const;
 
   std::vector<int> joint_of_dof;  ///< Bullet dof index -> joint index
 
 private:
-  const Eigen::MatrixXd* inertia_ = nullptr;
-  mutable Eigen::MatrixXd inverse_;
+  const JointMatrix* inertia_ = nullptr;
+  mutable JointMatrix inverse_;
   mutable bool inverted_ = false;
   bool valid_ = false;
 };

@@ -1,5 +1,5 @@
 #pragma once
-#include <Eigen/Core>
+#include <vrrw_physics/joint_space_inertia.h>
 #include <vector>
 
 namespace vrrw_physics
@@ -24,11 +24,11 @@ public:
   /// joint-space inertia M of the current configuration (jointSpaceInertia()) and the other
   /// generalized forces of the step (gravity, feed-forward), which the prediction of x must include:
   /// without them the static stiffness would fall to K*M/(M + h*(h*K + D)).
-  std::vector<double> torques(double h, const Eigen::MatrixXd& inertia, const std::vector<double>& external) const;
+  std::vector<double> torques(double h, const JointMatrix& inertia, const std::vector<double>& external) const;
 
 private:
   const ArticulatedRobot& robot_;
-  Eigen::MatrixXd reduction_;  ///< T: joints x driven joints
+  JointMatrix reduction_;  ///< T: joints x driven joints
   std::vector<int> driven_;    ///< joint index of each reduced coordinate
 };
 }  // namespace vrrw_physics
