@@ -16,7 +16,7 @@ using State = actionlib::SimpleClientGoalState;
 
 namespace
 {
-const double kVelocityLimit = 3.14159, kAccelerationLimit = 8.0;  // fixture URDF, fixture YAML
+const double kVelocityLimit = 3.14159265, kAccelerationLimit = 3.14159265;  // ur.xacro, urdf/config/ur5e.yaml
 
 struct Robot
 {
@@ -137,9 +137,9 @@ TEST(FakeMode, EveryValidationRuleRejectsAndLeavesTheRobotWhereItWas)
       [](auto& g) {
         for (auto& p : g.trajectory.points)
           p.accelerations.assign(6, 0.0);
-        g.trajectory.points[1].accelerations[0] = 9.0;
+        g.trajectory.points[1].accelerations[0] = 4.0;
       },
-      Result::INVALID_GOAL, "point 1: joint ur5e_shoulder_pan_joint: acceleration 9 exceeds limit 8" },
+      Result::INVALID_GOAL, "point 1: joint ur5e_shoulder_pan_joint: acceleration 4 exceeds limit 3.14159" },
     { "interpolated velocity", [](auto& g) { g.trajectory.points[1].time_from_start = ros::Duration(0.05); },
       Result::INVALID_GOAL, "point 1: joint ur5e_shoulder_pan_joint: interpolated velocity" },
     { "start tolerance", [](auto& g) { g.trajectory.points[0].positions[5] += 0.5; }, Result::INVALID_GOAL,
