@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/String.h>
 #include <std_srvs/Trigger.h>
@@ -159,6 +160,20 @@ TEST(PhysicsNode, PauseStepResume)
   EXPECT_TRUE(l.waitFor([&] { return l.count == paused_at + 1; }, 2.0));
   ASSERT_TRUE(trigger("/physics/resume"));
   EXPECT_TRUE(l.waitFor([&] { return l.count > paused_at + 10; }, 5.0));
+}
+
+TEST(PhysicsNode, PublishesSimulatedTimeOnClock)
+{
+  Listener l;
+  ros::NodeHandle nh;
+  std::vector<double> ticks;
+  ros::Subscriber clock = nh.subscribe<rosgraph_msgs::Clock>("/clock", 100, [&](const rosgraph_msgs::ClockConstPtr& m) {
+    ticks.push_back(m->clock.toSec());
+  });
+  ASSERT_TRUE(l.waitFor([&] { return ticks.size() > 20 && l.count > 0; }, 10.0));
+  EXPECT_GT(ticks.back(), ticks.front());
+  EXPECT_NEAR(ticks[1] - ticks[0], 0.001, 1e-6);  // one message per 1 ms step
+  EXPECT_LT(l.last.header.stamp.toSec(), 1e6);     // joint states carry simulated time
 }
 
 int main(int argc, char** argv)
