@@ -28,7 +28,6 @@ using Clock = std::chrono::steady_clock;
 /// Longest tree edge (joint-space distance) for planners with a range: measured best for the UR5e in
 /// pick_place_drill (p95 plan time 14-17 ms at 2-3 rad against 25 ms at OMPL's default of ~6 rad).
 constexpr double kRange = 2.5;
-constexpr int kShortcutAttempts = 20;
 constexpr int kShortcutFailures = 5;
 
 double seconds(Clock::time_point since)
@@ -304,7 +303,7 @@ PlanResult MotionPlanner::plan(const PlanRequest& request)
     for (std::size_t i = 0; i < solution.getStateCount(); ++i)
       path.push_back(toEigen(solution.getState(i), n));
     if (request.simplify)
-      simplify(path, request.seed);
+      simplify(path, request.shortcut_attempts, request.seed);
   }
   result.success = true;
   result.code = ErrorCode::Ok;
@@ -325,11 +324,11 @@ void MotionPlanner::reduceVertices(std::vector<Eigen::VectorXd>& path)
       }
 }
 
-void MotionPlanner::simplify(std::vector<Eigen::VectorXd>& path, std::uint64_t seed)
+void MotionPlanner::simplify(std::vector<Eigen::VectorXd>& path, int attempts, std::uint64_t seed)
 {
   reduceVertices(path);
   std::mt19937_64 rng(seed);
-  for (int attempt = 0, failures = 0; attempt < kShortcutAttempts && failures < kShortcutFailures && path.size() > 2;
+  for (int attempt = 0, failures = 0; attempt < attempts && failures < kShortcutFailures && path.size() > 2;
        ++attempt)
   {
     std::vector<double> cumulative(1, 0.0);

@@ -139,7 +139,8 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
     entry.elements.emplace_back(slot_of[first], moving ? slot_of[second] : -1 - second);
     ++pair_count_;
   }
-  std::map<std::pair<int, std::string>, StaticGroup> groups;
+  static_pair_index_.assign(moving_bodies_.size() * bodies.size(), -1);
+  std::vector<int> static_bodies;
   for (const auto& entry : grouped)
   {
     const BodyPair& pair = entry.second;
@@ -148,27 +149,13 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
       moving_pairs_.push_back(pair);
       continue;
     }
-    const CollisionBody& other = bodies[pair.b];
-    StaticGroup& group = groups[{ pair.a, other.robot.empty() ? "object " + other.name : other.robot }];
-    const Eigen::Vector3d low = body_centers_[pair.b] - body_halves_[pair.b];
-    const Eigen::Vector3d high = body_centers_[pair.b] + body_halves_[pair.b];
-    if (group.pairs.empty())
-    {
-      group.a = pair.a;
-      group.center = 0.5 * (low + high);
-      group.half = 0.5 * (high - low);
-    }
-    else
-    {
-      const Eigen::Vector3d merged_low = (group.center - group.half).cwiseMin(low);
-      const Eigen::Vector3d merged_high = (group.center + group.half).cwiseMax(high);
-      group.center = 0.5 * (merged_low + merged_high);
-      group.half = 0.5 * (merged_high - merged_low);
-    }
-    group.pairs.push_back(pair);
+    static_pair_index_[static_cast<std::size_t>(pair.a) * bodies.size() + static_cast<std::size_t>(pair.b)] =
+        static_cast<int>(static_pairs_.size());
+    static_pairs_.push_back(pair);
+    if (std::find(static_bodies.begin(), static_bodies.end(), pair.b) == static_bodies.end())
+      static_bodies.push_back(pair.b);
   }
-  for (auto& entry : groups)
-    static_groups_.push_back(std::move(entry.second));
+  tree_root_ = static_bodies.empty() ? -1 : buildTree(static_bodies, 0, static_bodies.size());
 
   sphere_centers_.resize(moving_bodies_.size());
   element_poses_.resize(moving_elements_.size());
@@ -176,6 +163,37 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
   halves_.resize(moving_elements_.size());
   stamps_.assign(moving_elements_.size(), 0);
   computeReach();
+}
+
+int StateChecker::buildTree(std::vector<int>& bodies, std::size_t begin, std::size_t end)
+{
+  BoxNode node;
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (std::size_t i = begin; i < end; ++i)
+  {
+    low = low.cwiseMin(body_centers_[bodies[i]] - body_halves_[bodies[i]]);
+    high = high.cwiseMax(body_centers_[bodies[i]] + body_halves_[bodies[i]]);
+  }
+  node.center = 0.5 * (low + high);
+  node.half = 0.5 * (high - low);
+  const int index = static_cast<int>(tree_.size());
+  tree_.push_back(node);
+  if (end - begin == 1)
+  {
+    tree_[index].body = bodies[begin];
+    return index;
+  }
+  int axis = 0;
+  node.half.maxCoeff(&axis);
+  const std::size_t middle = (begin + end) / 2;
+  std::nth_element(bodies.begin() + static_cast<std::ptrdiff_t>(begin), bodies.begin() + static_cast<std::ptrdiff_t>(middle),
+                   bodies.begin() + static_cast<std::ptrdiff_t>(end),
+                   [&](int a, int b) { return body_centers_[a][axis] < body_centers_[b][axis]; });
+  const int left = buildTree(bodies, begin, middle);
+  const int right = buildTree(bodies, middle, end);
+  tree_[index].left = left;
+  tree_[index].right = right;
+  return index;
 }
 
 void StateChecker::computeReach()
@@ -242,18 +260,30 @@ bool StateChecker::collide(const Eigen::VectorXd& q, Contact* contact)
   for (std::size_t b = 0; b < moving_bodies_.size(); ++b)
     sphere_centers_[b] = anchor_poses_[moving_bodies_[b].anchor] * moving_bodies_[b].center;
 
-  for (const StaticGroup& group : static_groups_)
-  {
-    if (!sphereTouchesBox(sphere_centers_[group.a], moving_bodies_[group.a].radius, group.center, group.half))
-      continue;
-    for (const BodyPair& pair : group.pairs)
-      if (pairCollides<kReport>(pair, contact))
+  if (tree_root_ >= 0)
+    for (std::size_t b = 0; b < moving_bodies_.size(); ++b)
+      if (staticCollides<kReport>(static_cast<int>(b), tree_root_, contact))
         return true;
-  }
   for (const BodyPair& pair : moving_pairs_)
     if (pairCollides<kReport>(pair, contact))
       return true;
   return false;
+}
+
+template <bool kReport>
+bool StateChecker::staticCollides(int moving_body, int node, Contact* contact)
+{
+  const BoxNode& box = tree_[node];
+  if (!sphereTouchesBox(sphere_centers_[moving_body], moving_bodies_[moving_body].radius, box.center, box.half))
+    return false;
+  if (box.body >= 0)
+  {
+    const int pair = static_pair_index_[static_cast<std::size_t>(moving_body) * world_.bodies().size() +
+                                        static_cast<std::size_t>(box.body)];
+    return pair >= 0 && pairCollides<kReport>(static_pairs_[pair], contact);
+  }
+  return staticCollides<kReport>(moving_body, box.left, contact) ||
+         staticCollides<kReport>(moving_body, box.right, contact);
 }
 
 template <bool kReport>

@@ -106,6 +106,7 @@ TEST_F(MotionPlannerTest, SameSeedSamePath)
     request.goal_joints = goal_;
     request.seed = 42;
     request.simplify = simplify;
+    request.shortcut_attempts = simplify ? 20 : 0;
     const PlanResult first = planner_->plan(request);
     const PlanResult second = planner_->plan(request);
     ASSERT_TRUE(first.success && second.success);

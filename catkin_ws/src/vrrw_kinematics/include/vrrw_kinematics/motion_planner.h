@@ -30,7 +30,9 @@ struct PlanRequest
   std::optional<Eigen::Isometry3d> goal_pose;  ///< of the planner's tip link, in the world (root) frame
   std::string planner = "RRTConnect";
   double time_limit = 1.0;  ///< s, IK goal sampling included
-  bool simplify = true;
+  bool simplify = true;       ///< drop every waypoint a straight valid segment can skip
+  /// Random shortcuts after that: in paper_multibot 10 give 9% shorter paths for 30% more p95 time.
+  int shortcut_attempts = 0;
   std::uint64_t seed = 1;
   IkOptions ik;
 };
@@ -86,8 +88,9 @@ private:
   bool goalStates(const PlanRequest& request, double budget, std::vector<Eigen::VectorXd>& goals, PlanResult& error);
   /// \brief Drops every waypoint a straight valid segment can skip (greedy, farthest first).
   void reduceVertices(std::vector<Eigen::VectorXd>& path);
-  /// \brief reduceVertices, then seeded random shortcuts between points on the path, then reduceVertices.
-  void simplify(std::vector<Eigen::VectorXd>& path, std::uint64_t seed);
+  /// \brief reduceVertices, then up to `attempts` seeded random shortcuts between points on the path
+  /// (stopping after 5 failures in a row), then reduceVertices again.
+  void simplify(std::vector<Eigen::VectorXd>& path, int attempts, std::uint64_t seed);
 
   StateChecker checker_;
   std::vector<std::string> joint_names_;

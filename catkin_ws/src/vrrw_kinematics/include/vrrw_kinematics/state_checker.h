@@ -83,14 +83,22 @@ private:
   std::vector<Eigen::Vector3d> static_halves_;
   std::vector<Eigen::Vector3d> body_centers_;  ///< static bodies' boxes
   std::vector<Eigen::Vector3d> body_halves_;
-  struct StaticGroup  ///< a moving body against the static bodies of one robot or one object
+  struct BoxNode  ///< bounding-box tree over the static bodies
   {
-    int a = -1;
     Eigen::Vector3d center = Eigen::Vector3d::Zero();
     Eigen::Vector3d half = Eigen::Vector3d::Zero();
-    std::vector<BodyPair> pairs;
+    int left = -1;
+    int right = -1;
+    int body = -1;  ///< leaf: world body index
   };
-  std::vector<StaticGroup> static_groups_;
+  int buildTree(std::vector<int>& bodies, std::size_t begin, std::size_t end);
+  template <bool kReport>
+  bool staticCollides(int moving_body, int node, Contact* contact);
+
+  std::vector<BodyPair> static_pairs_;
+  std::vector<int> static_pair_index_;  ///< [moving body * world bodies + static body] -> static_pairs_ or -1
+  std::vector<BoxNode> tree_;
+  int tree_root_ = -1;
   std::vector<BodyPair> moving_pairs_;
   std::size_t pair_count_ = 0;
   std::vector<double> reach_;

@@ -1,6 +1,7 @@
 #include "bench_args.h"
 
 #include <algorithm>
+#include <ctime>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -64,6 +65,13 @@ std::string readFile(const std::string& path)
   std::stringstream buffer;
   buffer << in.rdbuf();
   return buffer.str();
+}
+
+double threadCpuSeconds()
+{
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
 double percentile(std::vector<double> samples, double p)

@@ -46,9 +46,11 @@ int main(int argc, char** argv)
       }
       long in_collision = 0;
       const auto start = std::chrono::steady_clock::now();
+      const double cpu_start = vrrw_kinematics::threadCpuSeconds();
       for (long s = 0; s < samples; ++s)
         in_collision += checker.valid(states[static_cast<std::size_t>(s) % states.size()]) ? 0 : 1;
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double cpu_rate = static_cast<double>(samples) / (vrrw_kinematics::threadCpuSeconds() - cpu_start);
       const double rate = static_cast<double>(samples) / seconds;
       std::vector<Eigen::VectorXd> free_states;
       for (const Eigen::VectorXd& q : states)
@@ -71,7 +73,7 @@ int main(int argc, char** argv)
       std::cerr << robot.name << ": " << rate << " checks/s (" << free_rate << " on collision-free states), "
                 << checker.pairCount() << " pairs\n";
       robots << (robots.tellp() > 0 ? ", " : "") << "\"" << robot.name << "\": {\"checks_per_s\": " << rate
-             << ", \"free_checks_per_s\": " << free_rate << ", \"collision_fraction\": " << static_cast<double>(in_collision) / static_cast<double>(samples)
+             << ", \"cpu_checks_per_s\": " << cpu_rate << ", \"free_checks_per_s\": " << free_rate << ", \"collision_fraction\": " << static_cast<double>(in_collision) / static_cast<double>(samples)
              << ", \"pairs\": " << checker.pairCount() << "}";
     }
     std::printf("{\"scene\": \"%s\", \"samples\": %ld, \"checks_per_s\": %.0f, \"acm_entries\": %zu, "

@@ -48,7 +48,7 @@ int main(int argc, char** argv)
     vrrw_kinematics::CollisionWorld world = vrrw_kinematics::CollisionWorld::fromScene(scene);
     world.loadOrComputeAllowedCollisions(scene.cache_dir);
     const Eigen::VectorXd initial = vrrw_kinematics::initialState(world.model(), scene);
-    std::vector<double> all_ms, all_timing_ms;
+    std::vector<double> all_ms, all_cpu_ms, all_timing_ms;
     long successes = 0, total = 0;
     double length_sum = 0.0, duration_sum = 0.0;
     std::ostringstream robots;
@@ -77,8 +77,11 @@ int main(int argc, char** argv)
         request.planner = args.text("planner", "RRTConnect");
         request.time_limit = args.number("time-limit", 1.0);
         request.seed = seed + static_cast<std::uint64_t>(query);
+        request.shortcut_attempts = static_cast<int>(args.integer("shortcuts", 0));
         const auto start = std::chrono::steady_clock::now();
+        const double cpu_start = vrrw_kinematics::threadCpuSeconds();
         const vrrw_kinematics::PlanResult result = planner.plan(request);
+        all_cpu_ms.push_back(1e3 * (vrrw_kinematics::threadCpuSeconds() - cpu_start));
         const double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         ms.push_back(elapsed);
         all_ms.push_back(elapsed);
@@ -106,11 +109,13 @@ int main(int argc, char** argv)
     }
     const double n_ok = static_cast<double>(std::max(1L, successes));
     std::printf("{\"scene\": \"%s\", \"planner\": \"%s\", \"queries\": %ld, \"success_rate\": %.4f, "
-                "\"median_ms\": %.3f, \"p95_ms\": %.3f, \"mean_path_length\": %.4f, \"mean_duration_s\": %.4f, "
+                "\"median_ms\": %.3f, \"p95_ms\": %.3f, \"median_cpu_ms\": %.3f, \"p95_cpu_ms\": %.3f, "
+                "\"mean_path_length\": %.4f, \"mean_duration_s\": %.4f, "
                 "\"timing_median_ms\": %.3f, \"robots\": {%s}}\n",
                 scene.name.c_str(), args.text("planner", "RRTConnect").c_str(), total,
                 static_cast<double>(successes) / static_cast<double>(std::max(1L, total)),
-                vrrw_kinematics::percentile(all_ms, 50), vrrw_kinematics::percentile(all_ms, 95), length_sum / n_ok,
+                vrrw_kinematics::percentile(all_ms, 50), vrrw_kinematics::percentile(all_ms, 95),
+                vrrw_kinematics::percentile(all_cpu_ms, 50), vrrw_kinematics::percentile(all_cpu_ms, 95), length_sum / n_ok,
                 duration_sum / n_ok, vrrw_kinematics::percentile(all_timing_ms, 50), robots.str().c_str());
     return 0;
   }
