@@ -2,7 +2,8 @@
 //   publishes  /<robot>/joint_states, /joint_states (all robots), tf world -> <object>, /clock
 //              (~publish_clock), ~errors (std_msgs/String: rejected input, guard trips)
 //   subscribes /<robot>/drive_targets (sensor_msgs/JointState: name, position, optional velocity),
-//              ~hand_pose (geometry_msgs/PoseStamped: the kinematic hand)
+//              ~hand_pose (geometry_msgs/PoseStamped: the kinematic hand),
+//              ~spring_target (vrrw_physics/SpringTarget: moves an attached operator spring)
 //   services   ~pause ~resume ~step ~reset (std_srvs/Trigger), ~set_mode, ~set_gains, ~set_spring,
 //              ~set_object_pose (vrrw_physics/*)
 #include <vrrw_physics/physics_world.h>
@@ -10,6 +11,7 @@
 #include <vrrw_physics/SetMode.h>
 #include <vrrw_physics/SetObjectPose.h>
 #include <vrrw_physics/SetSpring.h>
+#include <vrrw_physics/SpringTarget.h>
 #include <vrrw_scene/scene_loader.h>
 
 #include <geometry_msgs/PoseStamped.h>
@@ -68,6 +70,12 @@ public:
     hand_ = pnh.subscribe<geometry_msgs::PoseStamped>("hand_pose", 10, [this](const geometry_msgs::PoseStampedConstPtr& msg) {
       guarded("hand_pose", [&] { world_.setHandPose(toEigen(msg->pose)); });
     });
+    spring_target_ = pnh.subscribe<vrrw_physics::SpringTarget>(
+        "spring_target", 10, [this](const vrrw_physics::SpringTargetConstPtr& msg) {
+          guarded("spring_target", [&] {
+            world_.moveSpring(msg->id, toEigen(msg->target), Eigen::Vector3d(msg->velocity.x, msg->velocity.y, msg->velocity.z));
+          });
+        });
     services_.push_back(pnh.advertiseService("pause", &PhysicsNode::onPause, this));
     services_.push_back(pnh.advertiseService("resume", &PhysicsNode::onResume, this));
     services_.push_back(pnh.advertiseService("step", &PhysicsNode::onStep, this));
@@ -284,7 +292,7 @@ private:
   std::vector<ros::Publisher> robot_states_;
   std::vector<ros::Subscriber> targets_;
   ros::Publisher all_states_, errors_, clock_;
-  ros::Subscriber hand_;
+  ros::Subscriber hand_, spring_target_;
   std::vector<ros::ServiceServer> services_;
   tf2_ros::TransformBroadcaster tf_;
 };

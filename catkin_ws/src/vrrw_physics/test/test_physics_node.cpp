@@ -2,7 +2,9 @@
 // targets move the arm, bad input gets an error on ~errors and the node keeps running,
 // pause / step / resume / reset.
 #include <vrrw_physics/SetGains.h>
+#include <vrrw_physics/SetMode.h>
 #include <vrrw_physics/SetSpring.h>
+#include <vrrw_physics/SpringTarget.h>
 
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -160,6 +162,39 @@ TEST(PhysicsNode, PauseStepResume)
   EXPECT_TRUE(l.waitFor([&] { return l.count == paused_at + 1; }, 2.0));
   ASSERT_TRUE(trigger("/physics/resume"));
   EXPECT_TRUE(l.waitFor([&] { return l.count > paused_at + 10; }, 5.0));
+}
+
+TEST(PhysicsNode, CompliantArmFollowsAnOperatorSpring)
+{
+  Listener l;
+  ros::NodeHandle nh;
+  ros::Publisher move = nh.advertise<vrrw_physics::SpringTarget>("/physics/spring_target", 10);
+  ASSERT_TRUE(l.waitFor([&] { return l.count > 0 && move.getNumSubscribers() > 0; }, 10.0));
+  ASSERT_TRUE(trigger("/physics/reset"));
+  vrrw_physics::SetMode mode;
+  mode.request.robot = "ur5e";
+  mode.request.mode = "compliant";
+  ASSERT_TRUE(ros::service::call("/physics/set_mode", mode) && mode.response.success) << mode.response.message;
+  vrrw_physics::SetSpring spring;
+  spring.request.id = "hand";
+  spring.request.body = "ur5e_tool0";
+  spring.request.target.position.y = 5.0;  // far along +y: a constant 20 N pull
+  spring.request.target.orientation.w = 1.0;
+  spring.request.stiffness = 1000.0;
+  spring.request.max_force = 20.0;
+  ASSERT_TRUE(ros::service::call("/physics/set_spring", spring) && spring.response.success) << spring.response.message;
+  const double pan = l.position("ur5e_shoulder_pan_joint");
+  EXPECT_TRUE(l.waitFor([&] { return std::abs(l.position("ur5e_shoulder_pan_joint") - pan) > 0.05; }, 5.0));
+  vrrw_physics::SpringTarget target;
+  target.id = "nobody";
+  target.target.orientation.w = 1.0;
+  move.publish(target);
+  EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("nobody"); }, 5.0));
+  spring.request.release = true;
+  ASSERT_TRUE(ros::service::call("/physics/set_spring", spring) && spring.response.success);
+  mode.request.mode = "rigid";
+  ASSERT_TRUE(ros::service::call("/physics/set_mode", mode) && mode.response.success);
+  ASSERT_TRUE(trigger("/physics/reset"));
 }
 
 TEST(PhysicsNode, PublishesSimulatedTimeOnClock)
