@@ -73,7 +73,7 @@ int main(int argc, char** argv)
   ros::NodeHandle nh, pnh("~");
   const std::string name = pnh.param<std::string>("robot", lastComponent(nh.getNamespace()));
   const std::string mode = pnh.param<std::string>("mode", "fake");
-  const double rate_hz = pnh.param("rate", 100.0);
+  const double rate_hz = pnh.param("rate", mode == "physics" ? 1000.0 : 100.0);  // physics: its 1 ms step
   if (mode != "fake" && mode != "physics" && mode != "real")
   {
     ROS_FATAL_STREAM("~mode: '" << mode << "' is not one of fake, physics, real");
