@@ -69,7 +69,10 @@ Eigen::VectorXd SceneContext::overlay(const sensor_msgs::JointState& msg) const
   {
     const int v = world_.model().variableIndex(msg.name[i]);
     if (v < 0)
-      throw KinematicsError(ErrorCode::InvalidArgument, "joint_state: joint " + msg.name[i] + ": not in the scene");
+    {
+      world_.model().jointIndex(msg.name[i]);  // throws for a joint the scene does not have
+      continue;                                // mimic and fixed joints follow the others
+    }
     if (!std::isfinite(msg.position[i]))
       throw KinematicsError(ErrorCode::InvalidArgument, "joint_state: joint " + msg.name[i] + ": not finite");
     state[v] = msg.position[i];
