@@ -196,6 +196,7 @@ bool RobotServices::checkState(vrrw_msgs::CheckState::Request& req, vrrw_msgs::C
       res.error_code = static_cast<int>(ErrorCode::InCollision);
       res.message = "in collision: " + contact.body_a + " - " + contact.body_b;
     }
+    res.min_distance = context_.world().distance(state, robot_.name).distance;
     res.valid = res.within_limits && !res.in_collision;
     return true;
   }

@@ -381,11 +381,11 @@ Contact CollisionWorld::check(const Eigen::VectorXd& variables, const std::strin
   return contact;
 }
 
-DistanceReport CollisionWorld::distance(const Eigen::VectorXd& variables, const std::string& body) const
+DistanceReport CollisionWorld::distance(const Eigen::VectorXd& variables, const std::string& owner) const
 {
-  const int only = body.empty() ? -1 : bodyIndex(body);
-  if (!body.empty() && only < 0)
-    throw KinematicsError(ErrorCode::UnknownLink, "body " + body + ": no link or object with collision geometry");
+  const auto owned = [&](const CollisionBody& body) { return body.name == owner || body.robot == owner; };
+  if (!owner.empty() && std::none_of(bodies_.begin(), bodies_.end(), owned))
+    throw KinematicsError(ErrorCode::UnknownLink, "body or robot " + owner + ": has no collision geometry");
   std::vector<Eigen::Isometry3d> body_poses;
   bodyTransforms(variables, body_poses);
   DistanceReport report;
@@ -395,7 +395,7 @@ DistanceReport CollisionWorld::distance(const Eigen::VectorXd& variables, const 
   {
     const CollisionElement& a = elements_[pair.first];
     const CollisionElement& b = elements_[pair.second];
-    if (only >= 0 && a.body != only && b.body != only)
+    if (!owner.empty() && !owned(bodies_[a.body]) && !owned(bodies_[b.body]))
       continue;
     fcl::DistanceResultd result;
     const double d = fcl::distance(a.geometry.get(), body_poses[a.body] * a.local, b.geometry.get(),

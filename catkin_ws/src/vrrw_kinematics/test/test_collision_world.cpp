@@ -38,6 +38,7 @@ TEST(CollisionWorld, SeparatedAndTouchingBall)
   EXPECT_LE(world.distance(zero, "ball").distance, 0.0);
   EXPECT_GT(world.distance(zero).distance, -1e9);
   EXPECT_THROW(world.distance(zero, "nothing"), KinematicsError);
+  EXPECT_LE(world.distance(zero, "ur5e").distance, 0.0);  // the URDF's robot name owns every link
 }
 
 TEST(CollisionWorld, AutomaticMatrixAllowsAdjacentAndNeverPairs)

@@ -59,6 +59,8 @@ TEST(PlanningNode, CheckStateNamesTheCollidingPair)
   free.request.joint_state = arm({ 0.0, -1.57, 1.57, -1.57, -1.57, 0.0 });
   free = call("/ur5e/check_state", free);
   EXPECT_TRUE(free.response.valid) << free.response.message;
+  EXPECT_GT(free.response.min_distance, 0.0);
+  EXPECT_LT(free.response.min_distance, 0.5);
 
   vrrw_msgs::CheckState down;  // upper arm pointing down through the table
   down.request.joint_state = arm({ 0.0, 1.2, 0.0, 0.0, 0.0, 0.0 });
@@ -66,6 +68,7 @@ TEST(PlanningNode, CheckStateNamesTheCollidingPair)
   EXPECT_FALSE(down.response.valid);
   EXPECT_TRUE(down.response.in_collision);
   EXPECT_EQ(down.response.error_code, 7);
+  EXPECT_LE(down.response.min_distance, 0.0);
   EXPECT_TRUE(down.response.link_a == "table" || down.response.link_b == "table")
       << down.response.link_a << " - " << down.response.link_b;
 

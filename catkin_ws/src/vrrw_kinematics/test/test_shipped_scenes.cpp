@@ -2,6 +2,8 @@
 // Robotiq grippers, Fetch) and pick_place_drill, expanded by vrrw_scene::loadScene.
 #include <gtest/gtest.h>
 
+#include <kdl/chainfksolverpos_recursive.hpp>
+#include <kdl_parser/kdl_parser.hpp>
 #include <random>
 #include <vrrw_scene/scene_loader.h>
 
@@ -20,6 +22,40 @@ const vrrw_scene::Scene& multibot()
   return scene;
 }
 }  // namespace
+
+TEST(ShippedScenes, FkAgreesWithKdlOnEveryArm)
+{
+  const RobotModel model = RobotModel::fromUrdf(multibot().urdf);
+  KDL::Tree tree;
+  ASSERT_TRUE(kdl_parser::treeFromString(multibot().urdf, tree));
+  for (const vrrw_scene::Robot& robot : multibot().robots)
+  {
+    const KinematicChain chain(model, robot.arm_base_link, robot.tcp_link);
+    KDL::Chain kdl_chain;
+    ASSERT_TRUE(tree.getChain(robot.arm_base_link, robot.tcp_link, kdl_chain));
+    ASSERT_EQ(kdl_chain.getNrOfJoints(), chain.size());
+    KDL::ChainFkSolverPos_recursive solver(kdl_chain);
+    std::mt19937_64 rng(2);
+    double worst = 0.0;
+    for (int s = 0; s < 100; ++s)
+    {
+      const Eigen::VectorXd q = chain.randomState(rng);
+      KDL::JntArray joints(kdl_chain.getNrOfJoints());
+      for (unsigned i = 0; i < kdl_chain.getNrOfJoints(); ++i)
+        joints(i) = q[i];
+      KDL::Frame frame;
+      solver.JntToCart(joints, frame);
+      const Eigen::Isometry3d pose = chain.fk(q);
+      for (int r = 0; r < 3; ++r)
+      {
+        worst = std::max(worst, std::abs(pose.translation()[r] - frame.p[r]));
+        for (int c = 0; c < 3; ++c)
+          worst = std::max(worst, std::abs(pose.linear()(r, c) - frame.M(r, c)));
+      }
+    }
+    EXPECT_LT(worst, 1e-9) << robot.name;
+  }
+}
 
 TEST(ShippedScenes, IkRoundTripsOnEveryArm)
 {

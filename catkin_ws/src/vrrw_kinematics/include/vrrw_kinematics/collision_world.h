@@ -93,8 +93,9 @@ public:
   void bodyTransforms(const Eigen::VectorXd& variables, std::vector<Eigen::Isometry3d>& out) const;
   /// \brief Full-scene check of every pair not allowed (only pairs with a body of `robot` when given).
   Contact check(const Eigen::VectorXd& variables, const std::string& robot = "") const;
-  /// \brief Smallest distance over every pair not allowed (only pairs with `body` when it is given).
-  DistanceReport distance(const Eigen::VectorXd& variables, const std::string& body = "") const;
+  /// \brief Smallest distance over every pair not allowed; only pairs with `owner` (a body name or a robot
+  /// name) when it is given. Throws KinematicsError(UnknownLink) when `owner` is neither.
+  DistanceReport distance(const Eigen::VectorXd& variables, const std::string& owner = "") const;
 
   /// \brief Moves a free object; throws KinematicsError(InvalidArgument) for an unknown object.
   void setObjectPose(const std::string& object, const Eigen::Isometry3d& pose);
