@@ -68,11 +68,6 @@ Eigen::Vector3d toEigen(const btVector3& v)
   return Eigen::Vector3d(v.x(), v.y(), v.z());
 }
 
-Eigen::Quaterniond toEigen(const btQuaternion& q)
-{
-  return Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z());
-}
-
 bool isMovable(const urdf::Joint& joint)
 {
   return joint.type == urdf::Joint::REVOLUTE || joint.type == urdf::Joint::CONTINUOUS ||
@@ -464,8 +459,12 @@ void ArticulatedRobot::refreshFrames()
     const btTransform& t = colliders_[i]->getWorldTransform();
     Eigen::Isometry3d& pose = poses_[i];
     pose.setIdentity();
-    pose.translate(toEigen(t.getOrigin()));
-    pose.rotate(toEigen(t.getRotation()));
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+        pose.matrix()(r, c) = t.getBasis()[r][c];
+      pose.matrix()(r, 3) = t.getOrigin()[r];
+    }
   }
 }
 

@@ -4,7 +4,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodySolverConstraint.h>
-#include <Eigen/Cholesky>
+#include <cmath>
 #include <Eigen/Geometry>
 
 namespace vrrw_physics
@@ -24,6 +24,50 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v)
 Eigen::Vector3d toEigen(const btVector3& v)
 {
   return Eigen::Vector3d(v.x(), v.y(), v.z());
+}
+
+/// Inverse of a symmetric positive-definite matrix by Cholesky, M = L L', M^-1 = L^-T L^-1
+/// (plain loops: for a dozen joints they beat Eigen's blocked dynamic-size kernels).
+JointMatrix invertSpd(const JointMatrix& m)
+{
+  const Eigen::Index n = m.rows();
+  JointMatrix l = JointMatrix::Zero(n, n);
+  for (Eigen::Index j = 0; j < n; ++j)
+  {
+    double d = m(j, j);
+    for (Eigen::Index k = 0; k < j; ++k)
+      d -= l(j, k) * l(j, k);
+    l(j, j) = std::sqrt(d);
+    for (Eigen::Index i = j + 1; i < n; ++i)
+    {
+      double s = m(i, j);
+      for (Eigen::Index k = 0; k < j; ++k)
+        s -= l(i, k) * l(j, k);
+      l(i, j) = s / l(j, j);
+    }
+  }
+  JointMatrix inv_l = JointMatrix::Zero(n, n);
+  for (Eigen::Index j = 0; j < n; ++j)
+  {
+    inv_l(j, j) = 1.0 / l(j, j);
+    for (Eigen::Index i = j + 1; i < n; ++i)
+    {
+      double s = 0.0;
+      for (Eigen::Index k = j; k < i; ++k)
+        s -= l(i, k) * inv_l(k, j);
+      inv_l(i, j) = s / l(i, i);
+    }
+  }
+  JointMatrix inverse(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j <= i; ++j)
+    {
+      double s = 0.0;
+      for (Eigen::Index k = i; k < n; ++k)
+        s += inv_l(k, i) * inv_l(k, j);
+      inverse(i, j) = inverse(j, i) = s;
+    }
+  return inverse;
 }
 }  // namespace
 
@@ -98,7 +142,7 @@ const JointMatrix& JointSpaceResponse::inverse() const
 {
   if (!inverted_)
   {
-    inverse_ = inertia_->llt().solve(JointMatrix::Identity(inertia_->rows(), inertia_->cols()));
+    inverse_ = invertSpd(*inertia_);
     inverted_ = true;
   }
   return inverse_;

@@ -10,6 +10,7 @@
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <stdexcept>
 
 namespace vrrw_physics
@@ -108,6 +109,16 @@ RigidObject::RigidObject(const vrrw_scene::Object& object)
   shapes_.push_back(std::move(compound));
   body_ = std::make_unique<btRigidBody>(info);
   body_->setRollingFriction(btScalar(0.0));
+  if (!fixed_)
+  {
+    // Continuous collision: a body flung at speed must not tunnel through a thin table top.
+    btVector3 low, high;
+    shapes_.back()->getAabb(btTransform::getIdentity(), low, high);
+    const btVector3 extent = high - low;
+    const btScalar smallest = std::min(extent.x(), std::min(extent.y(), extent.z()));
+    body_->setCcdMotionThreshold(btScalar(0.25) * smallest);
+    body_->setCcdSweptSphereRadius(btScalar(0.2) * smallest);
+  }
   if (fixed_)
     body_->setCollisionFlags(body_->getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
 }
