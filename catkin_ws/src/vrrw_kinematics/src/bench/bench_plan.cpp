@@ -40,7 +40,7 @@ int main(int argc, char** argv)
 {
   try
   {
-    const BenchArgs args(argc, argv);
+    const BenchArgs args(argc, argv, { "verbose" });
     const long queries = args.integer("queries", 100);
     const auto seed = static_cast<std::uint64_t>(args.integer("seed", 1));
     ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(seed));
@@ -86,6 +86,8 @@ int main(int argc, char** argv)
         ms.push_back(elapsed);
         all_ms.push_back(elapsed);
         ++total;
+        if (args.has("verbose"))
+          std::cerr << robot.name << " query " << query << ": " << elapsed << " ms " << result.message << "\n";
         if (!result.success)
         {
           std::cerr << robot.name << " query " << query << ": " << result.message << "\n";
