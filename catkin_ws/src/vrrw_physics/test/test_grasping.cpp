@@ -181,9 +181,9 @@ struct GraspResult
 };
 
 /// Grasps `object` at `grasp` (a point in the object frame) with the TCP in orientation `tool`
-/// (world), approaching along the tool z axis; lifts 0.2 m and carries 0.3 m along world y.
+/// (world), approaching along the tool z axis; lifts 0.2 m and carries it by `carry` (world).
 GraspResult pickAndCarry(PhysicsWorld& world, Ik& ik, const std::string& object, const Eigen::Vector3d& grasp,
-                         const Eigen::Matrix3d& tool)
+                         const Eigen::Matrix3d& tool, const Eigen::Vector3d& carry)
 {
   Operator op(world, ik);
   const Eigen::Vector3d start = world.objectPose(object) * grasp;
@@ -208,13 +208,13 @@ GraspResult pickAndCarry(PhysicsWorld& world, Ik& ik, const std::string& object,
     result.max_slip = std::max(result.max_slip, 1000.0 * (in_tcp - held).norm());
   };
   const Eigen::Vector3d lifted = start + Eigen::Vector3d(0, 0, 0.2);
-  const Eigen::Vector3d carried = lifted + Eigen::Vector3d(0, 0.3, 0);
+  const Eigen::Vector3d carried = lifted + carry;
   op.moveLinear(pose(lifted), 1.5, check);
   op.moveLinear(pose(carried), 2.0, check);
   op.move(op.arm(), 0.8, 0.5, check);
   const Eigen::Vector3d end = world.objectPose(object) * grasp;
   result.lifted = end.z() - start.z();
-  result.carried = end.y() - start.y();
+  result.carried = (end - start).dot(carry.normalized());
   return result;
 }
 
@@ -249,7 +249,7 @@ TEST(Grasping, Ur5eWith2F85LiftsAndCarriesACubeByFriction)
   down.col(0) = Eigen::Vector3d(-1, 0, 0);
   down.col(1) = Eigen::Vector3d(0, 1, 0);
   down.col(2) = Eigen::Vector3d(0, 0, -1);
-  const GraspResult r = pickAndCarry(world, ik, "small_cube", Eigen::Vector3d::Zero(), down);
+  const GraspResult r = pickAndCarry(world, ik, "small_cube", Eigen::Vector3d::Zero(), down, Eigen::Vector3d(0, 0.3, 0));
   std::cout << "cube: lifted " << r.lifted << " m, carried " << r.carried << " m, centre within " << r.max_offset
             << " mm of the TCP, slipped " << r.max_slip << " mm\n";
   EXPECT_NEAR(r.lifted, 0.2, 0.005);
@@ -273,7 +273,9 @@ TEST(Grasping, Ur5eWith2F85LiftsAndCarriesTheDrillByItsBody)
   down.col(2) = Eigen::Vector3d(0, 0, -1);
   down.col(1) = drill.col(1);
   down.col(0) = down.col(1).cross(down.col(2));
-  const GraspResult r = pickAndCarry(world, ik, "drill", Eigen::Vector3d(0.03, 0.0, 0.203), down);
+  // Carried towards -y: 0.3 m further out along +y is beyond the UR5e's reach with the tool down.
+  const GraspResult r =
+      pickAndCarry(world, ik, "drill", Eigen::Vector3d(0.03, 0.0, 0.203), down, Eigen::Vector3d(0, -0.3, 0));
   std::cout << "drill: lifted " << r.lifted << " m, carried " << r.carried << " m, grasp point within "
             << r.max_offset << " mm of the TCP, slipped " << r.max_slip << " mm\n";
   EXPECT_NEAR(r.lifted, 0.2, 0.005);
