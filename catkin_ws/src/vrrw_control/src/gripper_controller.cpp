@@ -40,9 +40,8 @@ void GripperController::start(double position, double now)
   motion_ = std::make_unique<TrajectoryInterpolator>(move);
   start_time_ = now;
   target_ = position;
-  last_position_ = hw_.state().positions[index_];
-  last_time_ = now;
-  still_since_ = -1.0;
+  window_position_ = hw_.state().positions[index_];
+  window_start_ = now;
   active_ = true;
 }
 
@@ -70,14 +69,12 @@ GripperController::Cycle GripperController::update(double time)
   c.goal_active = true;
   const double end = start_time_ + motion_->endTime();
   c.reached_goal = time >= end && std::abs(c.position - target_) <= options_.goal_tolerance;
-  const bool still = std::abs(c.position - last_position_) <= options_.stall_velocity * (time - last_time_) + 1e-12;
-  last_position_ = c.position;
-  last_time_ = time;
-  if (!still || time < start_time_ + 0.1)
-    still_since_ = -1.0;
-  else if (still_since_ < 0.0)
-    still_since_ = time;
-  c.stalled = !c.reached_goal && still_since_ >= 0.0 && time - still_since_ >= options_.stall_time &&
+  if (std::abs(c.position - window_position_) > options_.stall_velocity * options_.stall_time)
+  {
+    window_position_ = c.position;
+    window_start_ = time;
+  }
+  c.stalled = !c.reached_goal && time - window_start_ >= options_.stall_time &&
               std::abs(c.position - target_) > options_.goal_tolerance;
   c.timed_out = !c.reached_goal && !c.stalled && time > end + options_.timeout;
   if (c.reached_goal || c.stalled || c.timed_out)

@@ -13,7 +13,7 @@ struct GripperOptions
   double max_velocity = 1.0;       ///< rad/s (m/s) of the actuated joint
   double min_duration = 0.5;       ///< s for any move
   double goal_tolerance = 0.01;
-  double stall_velocity = 1e-3;    ///< below this the fingers count as not moving
+  double stall_velocity = 0.01;    ///< mean speed over stall_time below which the fingers do not move
   double stall_time = 0.2;         ///< s without motion short of the goal: stalled
   double timeout = 5.0;            ///< s after the planned move end
 };
@@ -49,7 +49,7 @@ private:
   GripperOptions options_;
   std::unique_ptr<TrajectoryInterpolator> motion_;
   double start_time_ = 0.0, target_ = 0.0, hold_ = 0.0;
-  double last_position_ = 0.0, last_time_ = 0.0, still_since_ = -1.0;
+  double window_position_ = 0.0, window_start_ = 0.0;  ///< where and when the fingers last moved
   bool active_ = false;
   bool started_ = false;
 };
