@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace vrrw_kinematics
 {
@@ -109,22 +110,27 @@ IkResult NumericIK::solve(const Eigen::Isometry3d& target, const Eigen::VectorXd
   Eigen::VectorXd q = seed;
   clamp(q);
   Error e;
+  double best = std::numeric_limits<double>::infinity();
   while (true)
   {
     ++result.attempts;
-    if (descend(target, options, q, e, kIterationsPerAttempt))
+    if (descend(target, options, q, e, kIterationsPerAttempt) && (q - seed).squaredNorm() < best)
     {
+      best = (q - seed).squaredNorm();
       result.success = true;
       result.code = ErrorCode::Ok;
       result.q = q;
       result.position_error = e.position;
       result.orientation_error = e.orientation;
-      return result;
+      if (!options.nearest)
+        return result;
     }
     if (Clock::now() >= deadline)
       break;
     q = chain_.randomState(rng);
   }
+  if (result.success)
+    return result;
   result.message = "no IK solution for tip " + chain_.tipLink() + " within " + std::to_string(options.timeout) +
                    " s (" + std::to_string(result.attempts) + " attempts; best position error " +
                    std::to_string(e.position) + " m)";

@@ -108,6 +108,28 @@ TEST(NumericIK, OrientationTolerantStaysWithinTolerance)
   EXPECT_GE(success, 99);
 }
 
+TEST(NumericIK, NearestModeSearchesUntilTheTimeout)
+{
+  const KinematicChain chain = KinematicChain::fromUrdf(fixture("panda.urdf"), "panda_link0", "panda_link8");
+  const NumericIK ik(chain);
+  std::mt19937_64 rng(12);
+  IkOptions first;
+  first.timeout = 0.003;
+  IkOptions nearest = first;
+  nearest.nearest = true;
+  for (int s = 0; s < 10; ++s)
+  {
+    const Eigen::Isometry3d target = chain.fk(chain.randomState(rng));
+    const Eigen::VectorXd seed = chain.randomState(rng);
+    const IkResult quick = ik.solve(target, seed, first);
+    const IkResult thorough = ik.solve(target, seed, nearest);
+    ASSERT_TRUE(quick.success && thorough.success);
+    EXPECT_GT(thorough.attempts, quick.attempts);
+    EXPECT_LE((thorough.q - seed).norm(), (quick.q - seed).norm() + 1e-12);
+    EXPECT_LE(thorough.position_error, 1e-5);
+  }
+}
+
 TEST(NumericIK, UnreachableTargetTimesOut)
 {
   const KinematicChain chain = KinematicChain::fromUrdf(fixture("panda.urdf"), "panda_link0", "panda_link8");

@@ -17,6 +17,8 @@ struct IkOptions
   double timeout = 0.005;               ///< s, random restarts until then
   std::uint64_t seed = 1;               ///< seeds the restarts
   bool allow_analytic = true;           ///< use the closed form when the chain has one
+  bool nearest = false;                 ///< numeric: keep restarting until the timeout, return the solution
+                                        ///< nearest the seed (else the first one, found from the seed itself)
 };
 
 /// \brief The answer to an IK request.

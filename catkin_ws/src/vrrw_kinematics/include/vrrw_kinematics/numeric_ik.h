@@ -11,8 +11,8 @@ namespace vrrw_kinematics
 /// \brief Numerical IK for any serial chain: damped least squares (Levenberg-Marquardt) Newton steps
 /// clamped to the joint limits, with random restarts until a time limit.
 ///
-/// Among the solutions found before the deadline the one nearest the seed is returned; the search
-/// starts from the seed, so the first solution found is normally the nearest one.
+/// The search starts from the seed, so the first solution found is normally the nearest one; with
+/// IkOptions::nearest it goes on until the timeout and returns the solution nearest the seed.
 class NumericIK
 {
 public:
