@@ -233,6 +233,14 @@ void CollisionWorld::bodyTransforms(const Eigen::VectorXd& variables, std::vecto
     out[b] = bodies_[b].link >= 0 ? links[bodies_[b].link] * bodies_[b].offset : bodies_[b].offset;
 }
 
+bool CollisionWorld::fixedInWorld(const CollisionBody& body) const
+{
+  for (int l = body.link; l > 0; l = model_.links()[l].parent_link)
+    if (model_.joints()[model_.links()[l].parent_joint].moves())
+      return false;
+  return true;
+}
+
 void CollisionWorld::computeAllowedCollisions(int samples, std::uint64_t seed)
 {
   AllowedCollisionMatrix acm;
@@ -315,18 +323,12 @@ void CollisionWorld::computeAllowedCollisions(int samples, std::uint64_t seed)
     climb(b, common);
     return variables.size();
   };
-  const auto fixed_in_world = [this](const CollisionBody& body) {
-    for (int l = body.link; l > 0; l = model_.links()[l].parent_link)
-      if (model_.joints()[model_.links()[l].parent_joint].moves())
-        return false;
-    return true;
-  };
   for (std::size_t c = 0; c < candidates.size(); ++c)
   {
     const CollisionBody& a = bodies_[candidates[c].first];
     const CollisionBody& b = bodies_[candidates[c].second];
     const bool same_robot = !a.robot.empty() && a.robot == b.robot;
-    if (hits[c] == samples && samples > 0 && (same_robot || (fixed_in_world(a) && fixed_in_world(b))))
+    if (hits[c] == samples && samples > 0 && (same_robot || (fixedInWorld(a) && fixedInWorld(b))))
       acm.allow(a.name, b.name, "always");
     else if (samples > 0 && same_robot && hits[c] == 0 && (!near[c] || variablesBetween(a.link, b.link) <= 2))
       acm.allow(a.name, b.name, "never");
@@ -395,7 +397,8 @@ DistanceReport CollisionWorld::distance(const Eigen::VectorXd& variables, const 
   {
     const CollisionElement& a = elements_[pair.first];
     const CollisionElement& b = elements_[pair.second];
-    if (!owner.empty() && !owned(bodies_[a.body]) && !owned(bodies_[b.body]))
+    if ((!owner.empty() && !owned(bodies_[a.body]) && !owned(bodies_[b.body])) ||
+        (fixedInWorld(bodies_[a.body]) && fixedInWorld(bodies_[b.body])))
       continue;
     fcl::DistanceResultd result;
     const double d = fcl::distance(a.geometry.get(), body_poses[a.body] * a.local, b.geometry.get(),

@@ -93,8 +93,9 @@ public:
   void bodyTransforms(const Eigen::VectorXd& variables, std::vector<Eigen::Isometry3d>& out) const;
   /// \brief Full-scene check of every pair not allowed (only pairs with a body of `robot` when given).
   Contact check(const Eigen::VectorXd& variables, const std::string& robot = "") const;
-  /// \brief Smallest distance over every pair not allowed; only pairs with `owner` (a body name or a robot
-  /// name) when it is given. Throws KinematicsError(UnknownLink) when `owner` is neither.
+  /// \brief Smallest distance over every pair not allowed, except pairs of two bodies fixed in the world
+  /// (a base on its table); only pairs with `owner` (a body name or a robot name) when it is given.
+  /// Throws KinematicsError(UnknownLink) when `owner` is neither.
   DistanceReport distance(const Eigen::VectorXd& variables, const std::string& owner = "") const;
 
   /// \brief Moves a free object; throws KinematicsError(InvalidArgument) for an unknown object.
@@ -112,6 +113,8 @@ private:
   void addBody(CollisionBody body, const std::vector<vrrw_scene::Shape>& shapes);
   void rebuildPairs();
   std::string robotOf(const std::string& link) const;
+  /// \brief True for a free object or a link with no movable joint between it and the root.
+  bool fixedInWorld(const CollisionBody& body) const;
 
   RobotModel model_;
   std::vector<std::string> robot_names_;
