@@ -11,9 +11,6 @@ namespace vrrw_physics
 {
 namespace
 {
-using Vector6d = Eigen::Matrix<double, 6, 1>;
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
-
 Eigen::Matrix3d skew(const Eigen::Vector3d& v)
 {
   Eigen::Matrix3d s;
@@ -73,10 +70,19 @@ JointMatrix invertSpd(const JointMatrix& m)
 
 JointMatrix jointSpaceInertia(const ArticulatedRobot& robot)
 {
+  // Spatial inertias about the world origin, kept as mass m, first moment h = m c and rotational
+  // inertia about the origin I_O = I_c - m [c]x^2; a motion (w, v_O) meets the momentum
+  // (I_O w + h x v_O, m v_O - h x w).
+  struct Composite
+  {
+    double mass = 0.0;
+    Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d rotational = Eigen::Matrix3d::Zero();
+  };
   const btMultiBody& body = *robot.body();
   const std::size_t n_links = static_cast<std::size_t>(body.getNumLinks());
-  std::vector<Matrix6d> composite(n_links);
-  std::vector<Vector6d> motion(n_links);
+  std::vector<Composite> composite(n_links);
+  std::vector<Eigen::Vector3d> angular(n_links), linear(n_links);
   for (std::size_t k = 0; k < n_links; ++k)
   {
     const int link = int(k);
@@ -85,26 +91,30 @@ JointMatrix jointSpaceInertia(const ArticulatedRobot& robot)
     const Eigen::Vector3d c = pose.translation();
     const double m = body.getLinkMass(link);
     const Eigen::Matrix3d cx = skew(c);
-    Matrix6d& inertia = composite[k];
-    inertia.topLeftCorner<3, 3>() = r * toEigen(body.getLinkInertia(link)).asDiagonal() * r.transpose() - m * cx * cx;
-    inertia.topRightCorner<3, 3>() = m * cx;
-    inertia.bottomLeftCorner<3, 3>() = -m * cx;
-    inertia.bottomRightCorner<3, 3>() = m * Eigen::Matrix3d::Identity();
+    composite[k].mass = m;
+    composite[k].moment = m * c;
+    composite[k].rotational = r * toEigen(body.getLinkInertia(link)).asDiagonal() * r.transpose() - m * cx * cx;
     const btMultibodyLink& joint = body.getLink(link);
     if (joint.m_jointType == btMultibodyLink::ePrismatic)
-      motion[k] << Eigen::Vector3d::Zero(), r * toEigen(joint.getAxisBottom(0));
+    {
+      angular[k].setZero();
+      linear[k] = r * toEigen(joint.getAxisBottom(0));
+    }
     else
     {
-      const Eigen::Vector3d axis = r * toEigen(joint.getAxisTop(0));
-      const Eigen::Vector3d pivot = c - r * toEigen(joint.m_dVector);
-      motion[k] << axis, pivot.cross(axis);
+      angular[k] = r * toEigen(joint.getAxisTop(0));
+      linear[k] = (c - r * toEigen(joint.m_dVector)).cross(angular[k]);
     }
   }
   for (std::size_t k = n_links; k-- > 0;)
   {
     const int parent = body.getParent(int(k));
-    if (parent >= 0)
-      composite[std::size_t(parent)] += composite[k];
+    if (parent < 0)
+      continue;
+    Composite& p = composite[std::size_t(parent)];
+    p.mass += composite[k].mass;
+    p.moment += composite[k].moment;
+    p.rotational += composite[k].rotational;
   }
   const auto& joints = robot.joints();
   std::vector<int> joint_of_link(n_links, -1);
@@ -117,13 +127,15 @@ JointMatrix jointSpaceInertia(const ArticulatedRobot& robot)
     const int j = joint_of_link[k];
     if (j < 0)
       continue;
-    const Vector6d force = composite[k] * motion[k];
+    const Composite& ic = composite[k];
+    const Eigen::Vector3d torque = ic.rotational * angular[k] + ic.moment.cross(linear[k]);
+    const Eigen::Vector3d force = ic.mass * linear[k] - ic.moment.cross(angular[k]);
     for (int a = int(k); a >= 0; a = body.getParent(a))
     {
       const int i = joint_of_link[std::size_t(a)];
       if (i < 0)
         continue;
-      const double value = motion[std::size_t(a)].dot(force);
+      const double value = angular[std::size_t(a)].dot(torque) + linear[std::size_t(a)].dot(force);
       m(i, j) = value;
       m(j, i) = value;
     }
