@@ -60,7 +60,7 @@ int main(int argc, char** argv)
     sink += interp.sample(interp.endTime() * k / samples).positions[0];
   const double sample_us = std::chrono::duration<double, std::micro>(Clock::now() - t1).count() / samples;
   std::fprintf(stderr, "checksum %g\n", sink);
-  std::printf("{\"bench\": \"control\", \"points\": %d, \"joints\": 6, \"gate_ms\": %.4f, \"sample_us\": %.4f}\n", points,
-              gate_ms, sample_us);
+  std::printf("{\"bench\": \"control\", \"points\": %d, \"joints\": 6, \"gate_ms\": %.4f, \"sample_us\": %.4f}\n",
+              points, gate_ms, sample_us);
   return 0;
 }

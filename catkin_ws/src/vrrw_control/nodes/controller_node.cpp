@@ -132,7 +132,8 @@ int main(int argc, char** argv)
   ArmActionServer::Options arm_options;
   arm_options.clock_origin = ros::Time::now();
   arm_options.defaults = Tolerances::uniform(robot.arm_joints.size(), pnh.param("path_tolerance", 0.0),
-                                             pnh.param("goal_tolerance", 0.01), pnh.param("goal_velocity_tolerance", 0.0),
+                                             pnh.param("goal_tolerance", 0.01),
+                                             pnh.param("goal_velocity_tolerance", 0.0),
                                              pnh.param("goal_time", 1.0));
   arm_options.confirm_timeout = pnh.param("confirm_timeout", 120.0);
   std::unique_ptr<RealDriverRelay> relay;

@@ -105,40 +105,44 @@ void ArmController::endGoal(Outcome outcome, const std::string& message, double 
     stop(time);
 }
 
+namespace
+{
+/// One line naming the first joint whose |value| exceeds its (checked, > 0) tolerance, or "".
+std::string firstViolation(const std::vector<std::string>& joints, const std::vector<double>& values,
+                           const std::vector<double>& tolerances, const std::string& what)
+{
+  for (size_t j = 0; j < joints.size(); ++j)
+    if (tolerances[j] > 0.0 && std::abs(values[j]) > tolerances[j])
+    {
+      std::ostringstream why;
+      why << "joint " << joints[j] << ": " << what << " " << std::abs(values[j]) << " exceeds " << tolerances[j];
+      return why.str();
+    }
+  return "";
+}
+}  // namespace
+
 void ArmController::checkTolerances(double t, Cycle& cycle)
 {
   const auto& tol = tolerances_;
-  const auto name = [&](size_t j) { return joints_[j]; };
-  std::ostringstream why;
+  const double now = t + motion_start_;
   if (t <= motion_->endTime())
   {
-    for (size_t j = 0; j < joints_.size(); ++j)
-    {
-      const double ep = std::abs(cycle.error.positions[j]), ev = std::abs(cycle.error.velocities[j]);
-      if (tol.path_position[j] > 0.0 && ep > tol.path_position[j])
-        why << "joint " << name(j) << ": position error " << ep << " exceeds path tolerance " << tol.path_position[j];
-      else if (tol.path_velocity[j] > 0.0 && ev > tol.path_velocity[j])
-        why << "joint " << name(j) << ": velocity error " << ev << " exceeds path tolerance " << tol.path_velocity[j];
-      if (!why.str().empty())
-        return endGoal(Outcome::PathToleranceViolated, why.str(), t + motion_start_, cycle);
-    }
+    std::string why = firstViolation(joints_, cycle.error.positions, tol.path_position, "position error");
+    if (why.empty())
+      why = firstViolation(joints_, cycle.error.velocities, tol.path_velocity, "velocity error");
+    if (!why.empty())
+      endGoal(Outcome::PathToleranceViolated, why + " (path tolerance)", now, cycle);
     return;
   }
-  for (size_t j = 0; j < joints_.size(); ++j)
-  {
-    const double ep = std::abs(cycle.error.positions[j]), v = std::abs(cycle.actual.velocities[j]);
-    if (tol.goal_position[j] > 0.0 && ep > tol.goal_position[j])
-      why << "joint " << name(j) << ": position error " << ep << " exceeds goal tolerance " << tol.goal_position[j];
-    else if (tol.goal_velocity[j] > 0.0 && v > tol.goal_velocity[j])
-      why << "joint " << name(j) << ": velocity " << v << " exceeds goal tolerance " << tol.goal_velocity[j];
-    if (!why.str().empty())
-      break;
-  }
-  if (why.str().empty())
-    return endGoal(Outcome::Succeeded, "", t + motion_start_, cycle);
-  if (t > motion_->endTime() + tol.goal_time)
-    endGoal(Outcome::GoalToleranceViolated, why.str() + " after goal time tolerance " + std::to_string(tol.goal_time) + " s",
-            t + motion_start_, cycle);
+  std::string why = firstViolation(joints_, cycle.error.positions, tol.goal_position, "position error");
+  if (why.empty())
+    why = firstViolation(joints_, cycle.actual.velocities, tol.goal_velocity, "velocity");
+  if (why.empty())
+    endGoal(Outcome::Succeeded, "", now, cycle);
+  else if (t > motion_->endTime() + tol.goal_time)
+    endGoal(Outcome::GoalToleranceViolated,
+            why + " (goal tolerance) " + std::to_string(tol.goal_time) + " s after the end", now, cycle);
 }
 
 ArmController::Cycle ArmController::update(double time)

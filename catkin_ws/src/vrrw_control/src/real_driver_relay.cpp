@@ -32,7 +32,8 @@ bool RealDriverRelay::send(const Goal& validated, Done done, Feedback feedback)
     return false;
   client_.sendGoal(
       driverGoal(validated),
-      [done](const actionlib::SimpleClientGoalState& state, const control_msgs::FollowJointTrajectoryResultConstPtr& r) {
+      [done](const actionlib::SimpleClientGoalState& state,
+             const control_msgs::FollowJointTrajectoryResultConstPtr& r) {
         done(state, r ? *r : control_msgs::FollowJointTrajectoryResult());
       },
       actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>::SimpleActiveCallback(),

@@ -2,7 +2,10 @@
 
 namespace vrrw_control
 {
-RealRobot::RealRobot(std::vector<std::string> joints, DriveLink& link) : RobotHardware(std::move(joints)), link_(link) {}
+RealRobot::RealRobot(std::vector<std::string> joints, DriveLink& link)
+  : RobotHardware(std::move(joints)), link_(link)
+{
+}
 
 void RealRobot::read(double, double)
 {

@@ -87,8 +87,9 @@ bool TrajectoryValidator::checkPoints(const vrrw_trajectory::JointTrajectory& go
       return reject(v, Bad, pi, "", "positions has " + std::to_string(p.positions.size()) + " values, expected " +
                                         std::to_string(n));
     if (!p.velocities.empty() && p.velocities.size() != n)
-      return reject(v, Bad, pi, "", "velocities has " + std::to_string(p.velocities.size()) + " values, expected 0 or " +
-                                        std::to_string(n));
+      return reject(v, Bad, pi, "",
+                    "velocities has " + std::to_string(p.velocities.size()) + " values, expected 0 or " +
+                        std::to_string(n));
     if (!p.accelerations.empty() && p.accelerations.size() != n)
       return reject(v, Bad, pi, "",
                     "accelerations has " + std::to_string(p.accelerations.size()) + " values, expected 0 or " +
@@ -112,7 +113,8 @@ bool TrajectoryValidator::checkPoints(const vrrw_trajectory::JointTrajectory& go
       const double q = p.positions[k];
       if (l.has_position_limits && (q < l.min_position || q > l.max_position))
         return reject(v, Bad, pi, l.name,
-                      "position " + fmt(q) + " outside limits [" + fmt(l.min_position) + ", " + fmt(l.max_position) + "]");
+                      "position " + fmt(q) + " outside limits [" + fmt(l.min_position) + ", " +
+                          fmt(l.max_position) + "]");
       if (!p.velocities.empty() && std::abs(p.velocities[k]) > l.max_velocity)
         return reject(v, Bad, pi, l.name,
                       "velocity " + fmt(p.velocities[k]) + " exceeds limit " + fmt(l.max_velocity));

@@ -96,7 +96,8 @@ TEST(ArmController, PathAndGoalTolerancesAbort)
     ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), { 4.0 });
     const auto v = arm.validate(ramp(names, 0.5, 1.0), 0.0);
     ASSERT_TRUE(v.ok());
-    const auto tol = mode == 0 ? Tolerances::uniform(1, 0.02, 0.0, 0.0, 0.0) : Tolerances::uniform(1, 0.0, 0.01, 0.0, 0.3);
+    const auto tol =
+        mode == 0 ? Tolerances::uniform(1, 0.02, 0.0, 0.0, 0.0) : Tolerances::uniform(1, 0.0, 0.01, 0.0, 0.3);
     arm.start(v, 0.0, 0.0, tol);
     ArmController::Cycle c;
     double end = 0.0;

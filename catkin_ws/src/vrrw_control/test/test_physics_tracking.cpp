@@ -20,7 +20,9 @@ namespace
 struct Arm
 {
   Arm(ros::NodeHandle& nh, const std::string& name)
-    : name(name), client("/" + name + "/arm_controller/follow_joint_trajectory", true), states(nh, "/" + name + "/joint_states")
+    : name(name)
+    , client("/" + name + "/arm_controller/follow_joint_trajectory", true)
+    , states(nh, "/" + name + "/joint_states")
   {
   }
   std::string name;

@@ -14,7 +14,8 @@ public:
   using Action = control_msgs::GripperCommandAction;
   using GoalHandle = actionlib::ServerGoalHandle<Action>;
 
-  GripperActionServer(ros::NodeHandle& nh, GripperController& gripper, const ros::Time& clock_origin, bool allow_stalling);
+  GripperActionServer(ros::NodeHandle& nh, GripperController& gripper, const ros::Time& clock_origin,
+                      bool allow_stalling);
   void update(const ros::Time& now);
 
 private:

@@ -15,7 +15,8 @@ class RealDriverRelay
 {
 public:
   using Goal = control_msgs::FollowJointTrajectoryGoal;
-  using Done = std::function<void(const actionlib::SimpleClientGoalState&, const control_msgs::FollowJointTrajectoryResult&)>;
+  using Result = control_msgs::FollowJointTrajectoryResult;
+  using Done = std::function<void(const actionlib::SimpleClientGoalState&, const Result&)>;
   using Feedback = std::function<void(const control_msgs::FollowJointTrajectoryFeedback&)>;
 
   RealDriverRelay(const std::string& action, const std::string& prefix);
