@@ -10,21 +10,24 @@ namespace
 constexpr double kAlpha[6] = { M_PI / 2, 0.0, 0.0, M_PI / 2, -M_PI / 2, 0.0 };
 constexpr double kParallel = 1e-9;
 
-Eigen::Matrix4d dhMatrix(double theta, double d, double a, double alpha)
+/// cos and sin of the DH twists kAlpha, exact.
+constexpr double kCosAlpha[6] = { 0.0, 1.0, 1.0, 0.0, 0.0, 1.0 };
+constexpr double kSinAlpha[6] = { 1.0, 0.0, 0.0, 1.0, -1.0, 0.0 };
+
+Eigen::Matrix4d dhMatrix(double theta, double d, double a, int joint)
 {
-  const double ct = std::cos(theta), st = std::sin(theta), ca = std::cos(alpha), sa = std::sin(alpha);
+  const double ct = std::cos(theta), st = std::sin(theta), ca = kCosAlpha[joint], sa = kSinAlpha[joint];
   Eigen::Matrix4d m;
   m << ct, -st * ca, st * sa, a * ct, st, ct * ca, -ct * sa, a * st, 0, sa, ca, d, 0, 0, 0, 1;
   return m;
 }
 
-Eigen::Matrix4d dhInverse(double theta, double d, double a, double alpha)
+Eigen::Matrix4d dhInverse(double theta, double d, double a, int joint)
 {
-  Eigen::Matrix4d m = dhMatrix(theta, d, a, alpha);
-  Eigen::Matrix4d inv = Eigen::Matrix4d::Identity();
-  inv.topLeftCorner<3, 3>() = m.topLeftCorner<3, 3>().transpose();
-  inv.topRightCorner<3, 1>() = -inv.topLeftCorner<3, 3>() * m.topRightCorner<3, 1>();
-  return inv;
+  const double ct = std::cos(theta), st = std::sin(theta), ca = kCosAlpha[joint], sa = kSinAlpha[joint];
+  Eigen::Matrix4d m;
+  m << ct, st, 0, -a, -st * ca, ct * ca, sa, -d * sa, st * sa, -ct * sa, ca, -d * ca, 0, 0, 0, 1;
+  return m;
 }
 
 Eigen::Vector3d perpendicular(const Eigen::Vector3d& z)
@@ -40,7 +43,7 @@ double signedAngle(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const
 
 double wrap(double angle)
 {
-  return std::remainder(angle, 2.0 * M_PI);
+  return angle - 2.0 * M_PI * std::nearbyint(angle / (2.0 * M_PI));
 }
 }  // namespace
 
@@ -153,7 +156,7 @@ Eigen::Isometry3d URAnalyticIK::fk(const Eigen::VectorXd& q) const
   const double a[6] = { 0, params_.a2, params_.a3, 0, 0, 0 };
   Eigen::Matrix4d t = params_.base_to_dh.matrix();
   for (int i = 0; i < 6; ++i)
-    t = t * dhMatrix(params_.sign[i] * q[i] + params_.offset[i], d[i], a[i], kAlpha[i]);
+    t = t * dhMatrix(params_.sign[i] * q[i] + params_.offset[i], d[i], a[i], i);
   Eigen::Isometry3d out;
   out.matrix() = t;
   return out * params_.dh_to_tip;
@@ -190,8 +193,8 @@ int URAnalyticIK::solveDH(const Eigen::Matrix4d& t06, std::array<std::array<doub
       double theta6 = 0.0;
       if (std::abs(s5) > 1e-12)
         theta6 = std::atan2((-t60(1, 0) * s1 + t60(1, 1) * c1) / s5, (t60(0, 0) * s1 - t60(0, 1) * c1) / s5);
-      const Eigen::Matrix4d t14 = dhInverse(theta1, k.d1, 0, kAlpha[0]) * t06 * dhInverse(theta6, k.d6, 0, 0) *
-                                  dhInverse(theta5, k.d5, 0, kAlpha[4]);
+      const Eigen::Matrix4d t14 =
+          dhInverse(theta1, k.d1, 0, 0) * t06 * dhInverse(theta6, k.d6, 0, 5) * dhInverse(theta5, k.d5, 0, 4);
       const Eigen::Vector2d p13(t14(0, 3) - k.d4 * t14(0, 1), t14(1, 3) - k.d4 * t14(1, 1));
       const double p13_norm2 = p13.squaredNorm();
       double cos3 = (p13_norm2 - k.a2 * k.a2 - k.a3 * k.a3) / (2.0 * k.a2 * k.a3);
@@ -204,7 +207,7 @@ int URAnalyticIK::solveDH(const Eigen::Matrix4d& t06, std::array<std::array<doub
         const double theta2 = std::atan2(p13.y(), p13.x()) -
                               std::atan2(k.a3 * std::sin(theta3), k.a2 + k.a3 * std::cos(theta3));
         const Eigen::Matrix4d t34 =
-            dhInverse(theta3, 0, k.a3, 0) * dhInverse(theta2, 0, k.a2, 0) * t14;
+            dhInverse(theta3, 0, k.a3, 2) * dhInverse(theta2, 0, k.a2, 1) * t14;
         const double theta4 = std::atan2(t34(1, 0), t34(0, 0));
         solutions[count++] = { { theta1, theta2, theta3, theta4, theta5, theta6 } };
       }
