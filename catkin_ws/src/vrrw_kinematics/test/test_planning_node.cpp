@@ -46,6 +46,21 @@ TEST(PlanningNode, FkIkRoundTrip)
   for (std::size_t i = 0; i < 6; ++i)
     EXPECT_NEAR(ik.response.solution.position[i], fk.request.joint_state.position[i], 1e-6);
 
+  vrrw_msgs::ComputeIK free_only;  // a collision-free solution, position-only mode
+  free_only.request.pose = fk.response.pose;
+  free_only.request.mode = vrrw_msgs::ComputeIK::Request::POSITION_ONLY;
+  free_only.request.avoid_collisions = true;
+  free_only = call("/ur5e/compute_ik", free_only);
+  ASSERT_EQ(free_only.response.error_code, 0) << free_only.response.message;
+  vrrw_msgs::CheckState check;
+  check.request.joint_state = free_only.response.solution;
+  EXPECT_TRUE(call("/ur5e/check_state", check).response.valid);
+  vrrw_msgs::ComputeFK reached;
+  reached.request.joint_state = free_only.response.solution;
+  reached = call("/ur5e/compute_fk", reached);
+  EXPECT_NEAR(reached.response.pose.pose.position.x, fk.response.pose.pose.position.x, 1e-5);
+  EXPECT_NEAR(reached.response.pose.pose.position.z, fk.response.pose.pose.position.z, 1e-5);
+
   vrrw_msgs::ComputeFK in_base;
   in_base.request.joint_state = fk.request.joint_state;
   in_base.request.frame_id = "ur5e_base_link";
