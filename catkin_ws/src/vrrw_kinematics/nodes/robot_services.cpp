@@ -178,7 +178,7 @@ bool RobotServices::checkState(vrrw_msgs::CheckState::Request& req, vrrw_msgs::C
     for (const int v : arm_variables_)
     {
       const JointModel& joint = model.joints()[model.variableJoints()[v]];
-      if (state[v] < joint.lower - 1e-9 || state[v] > joint.upper + 1e-9)
+      if (joint.type != JointModel::Type::Continuous && (state[v] < joint.lower - 1e-9 || state[v] > joint.upper + 1e-9))
       {
         res.within_limits = false;
         res.error_code = static_cast<int>(ErrorCode::OutsideLimits);

@@ -51,6 +51,7 @@ MotionPlanner::MotionPlanner(const CollisionWorld& world, const std::vector<std:
     const JointModel& joint = model.joints()[model.jointIndex(joints[i])];
     lower_[i] = joint.lower;
     upper_[i] = joint.upper;
+    continuous_.push_back(joint.type == JointModel::Type::Continuous);
   }
   reach_ = checker_.reach();
 
@@ -63,7 +64,8 @@ MotionPlanner::MotionPlanner(const CollisionWorld& world, const std::vector<std:
   chain_base_pose_ = model.relativeTransform(world_state, model.links()[0].name, base);
 
   ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-  auto space = std::make_shared<ob::RealVectorStateSpace>(joints.size());
+  space_ = std::make_shared<ob::RealVectorStateSpace>(joints.size());
+  auto& space = space_;
   ob::RealVectorBounds bounds(joints.size());
   for (std::size_t i = 0; i < joints.size(); ++i)
   {
@@ -147,10 +149,22 @@ std::string MotionPlanner::limitViolation(const Eigen::VectorXd& q) const
   if (q.size() != lower_.size())
     return "expected " + std::to_string(lower_.size()) + " joint values, got " + std::to_string(q.size());
   for (Eigen::Index i = 0; i < q.size(); ++i)
-    if (!std::isfinite(q[i]) || q[i] < lower_[i] - 1e-9 || q[i] > upper_[i] + 1e-9)
+    if (!std::isfinite(q[i]) || (!continuous_[i] && (q[i] < lower_[i] - 1e-9 || q[i] > upper_[i] + 1e-9)))
       return "joint " + joint_names_[i] + " = " + std::to_string(q[i]) + " outside [" + std::to_string(lower_[i]) +
              ", " + std::to_string(upper_[i]) + "]";
   return "";
+}
+
+Eigen::VectorXd MotionPlanner::nearestTurn(const Eigen::VectorXd& q, const Eigen::VectorXd& reference) const
+{
+  Eigen::VectorXd out = q;
+  for (Eigen::Index i = 0; i < q.size(); ++i)
+    if (continuous_[i])
+    {
+      const double delta = q[i] - reference[i];
+      out[i] = reference[i] + delta - 2.0 * M_PI * std::nearbyint(delta / (2.0 * M_PI));
+    }
+  return out;
 }
 
 PlanResult MotionPlanner::fail(ErrorCode code, const std::string& message) const
@@ -178,7 +192,7 @@ bool MotionPlanner::goalStates(const PlanRequest& request, double budget, std::v
       error = fail(ErrorCode::InCollision, "goal: in collision (" + contact.body_a + " - " + contact.body_b + ")");
       return false;
     }
-    goals.push_back(*request.goal_joints);
+    goals.push_back(nearestTurn(*request.goal_joints, request.start));
     return true;
   }
   if (!request.goal_pose)
@@ -222,7 +236,7 @@ bool MotionPlanner::goalStates(const PlanRequest& request, double budget, std::v
       any_solution = true;
       const Contact contact = checker_.check(q);
       if (!contact.collision)
-        goals.push_back(q);
+        goals.push_back(nearestTurn(q, request.start));
       else if (!first_contact.collision)
         first_contact = contact;
     }
@@ -270,6 +284,14 @@ PlanResult MotionPlanner::plan(const PlanRequest& request)
   if (!goalStates(request, 0.5 * request.time_limit, goals, result))
     return result;
 
+  ob::RealVectorBounds bounds(size());
+  for (std::size_t i = 0; i < size(); ++i)
+  {
+    const Eigen::Index j = static_cast<Eigen::Index>(i);
+    bounds.setLow(i, continuous_[i] ? request.start[j] - M_PI : lower_[j]);
+    bounds.setHigh(i, continuous_[i] ? request.start[j] + M_PI : upper_[j]);
+  }
+  space_->setBounds(bounds);
   sampler_seed_ = request.seed * 1000003ull + 1;
   const std::size_t n = size();
   auto pdef = std::make_shared<ob::ProblemDefinition>(si_);

@@ -4,6 +4,7 @@
 
 #include <kdl/chainfksolverpos_recursive.hpp>
 #include <kdl_parser/kdl_parser.hpp>
+#include <algorithm>
 #include <random>
 #include <vrrw_scene/scene_loader.h>
 
@@ -171,4 +172,29 @@ TEST(ShippedScenes, PlannedTrajectoriesAreCollisionFreeAndWithinLimits)
       EXPECT_LT((previous - goal).norm(), 1e-9);
     }
   }
+}
+
+TEST(ShippedScenes, ContinuousJointsPlanFromAnyTurn)
+{
+  CollisionWorld world = CollisionWorld::fromScene(multibot());
+  world.loadOrComputeAllowedCollisions(multibot().cache_dir);
+  const Eigen::VectorXd initial = initialState(world.model(), multibot());
+  const vrrw_scene::Robot& fetch = *multibot().robot("fetch");
+  MotionPlanner planner(world, fetch.arm_joints, fetch.tcp_link, initial);
+  Eigen::VectorXd start(static_cast<Eigen::Index>(fetch.arm_joints.size()));
+  for (std::size_t i = 0; i < fetch.arm_joints.size(); ++i)
+    start[static_cast<Eigen::Index>(i)] = initial[world.model().variableIndex(fetch.arm_joints[i])];
+  const auto roll = std::find(fetch.arm_joints.begin(), fetch.arm_joints.end(), "fetch_wrist_roll_joint");
+  ASSERT_NE(roll, fetch.arm_joints.end());
+  const Eigen::Index r = roll - fetch.arm_joints.begin();
+  start[r] += 4.0 * M_PI + 0.3;  // two turns on, as a joint state may report
+  Eigen::VectorXd goal = start;
+  goal[r] = -0.2;  // the same as 4 pi - 0.2, 0.5 rad away
+  PlanRequest request;
+  request.start = start;
+  request.goal_joints = goal;
+  const PlanResult result = planner.plan(request);
+  ASSERT_TRUE(result.success) << result.message;
+  EXPECT_NEAR(result.path.back()[r], 4.0 * M_PI - 0.2, 1e-9);
+  EXPECT_NEAR(result.path_length, 0.5, 1e-9);
 }

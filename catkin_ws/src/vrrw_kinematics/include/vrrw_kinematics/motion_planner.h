@@ -17,7 +17,8 @@ namespace ompl
 namespace base
 {
 class SpaceInformation;
-}
+class RealVectorStateSpace;
+}  // namespace base
 }  // namespace ompl
 
 namespace vrrw_kinematics
@@ -52,6 +53,7 @@ struct PlanResult
 ///
 /// Motions are checked at a resolution such that no point of a moving body travels more than
 /// `resolution` metres between two checked states (per-joint reach bounds, see StateChecker::reach()).
+/// Continuous joints have no limits: they take any value, and plan within pi of their start value.
 class MotionPlanner
 {
 public:
@@ -85,6 +87,8 @@ public:
 private:
   PlanResult fail(ErrorCode code, const std::string& message) const;
   std::string limitViolation(const Eigen::VectorXd& q) const;
+  /// \brief q with every continuous joint moved by whole turns to within pi of `reference`.
+  Eigen::VectorXd nearestTurn(const Eigen::VectorXd& q, const Eigen::VectorXd& reference) const;
   bool goalStates(const PlanRequest& request, double budget, std::vector<Eigen::VectorXd>& goals, PlanResult& error);
   /// \brief Drops every waypoint a straight valid segment can skip (greedy, farthest first).
   void reduceVertices(std::vector<Eigen::VectorXd>& path);
@@ -100,7 +104,9 @@ private:
   double resolution_;
   std::unique_ptr<IkSolver> ik_;
   Eigen::Isometry3d chain_base_pose_ = Eigen::Isometry3d::Identity();
+  std::shared_ptr<ompl::base::RealVectorStateSpace> space_;
   std::shared_ptr<ompl::base::SpaceInformation> si_;
+  std::vector<bool> continuous_;  ///< continuous joints plan within pi of the start, any turn count
   std::uint64_t sampler_seed_ = 1;
 };
 
