@@ -116,7 +116,8 @@ std::string KinematicChain::jointOutsideLimits(const Eigen::VectorXd& q, double 
   if (static_cast<std::size_t>(q.size()) != joints_.size())
     return "(joint count " + std::to_string(q.size()) + " != " + std::to_string(joints_.size()) + ")";
   for (std::size_t i = 0; i < joints_.size(); ++i)
-    if (!std::isfinite(q[i]) || q[i] < joints_[i].lower - tolerance || q[i] > joints_[i].upper + tolerance)
+    if (!std::isfinite(q[i]) ||
+        (!joints_[i].continuous && (q[i] < joints_[i].lower - tolerance || q[i] > joints_[i].upper + tolerance)))
       return joints_[i].name;
   return "";
 }

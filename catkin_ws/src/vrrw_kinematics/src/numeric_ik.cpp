@@ -15,6 +15,12 @@ constexpr double kMaxStep = 0.6;
 NumericIK::NumericIK(const KinematicChain& chain)
   : chain_(chain), lower_(chain.lowerLimits()), upper_(chain.upperLimits())
 {
+  for (std::size_t i = 0; i < chain.size(); ++i)
+    if (chain.joints()[i].continuous)
+    {
+      lower_[static_cast<Eigen::Index>(i)] = -std::numeric_limits<double>::infinity();
+      upper_[static_cast<Eigen::Index>(i)] = std::numeric_limits<double>::infinity();
+    }
 }
 
 void NumericIK::clamp(Eigen::VectorXd& q) const

@@ -130,6 +130,23 @@ TEST(NumericIK, NearestModeSearchesUntilTheTimeout)
   }
 }
 
+TEST(NumericIK, ContinuousJointStaysOnTheSeedsTurn)
+{
+  const KinematicChain chain = KinematicChain::fromUrdf(fixture("gantry.urdf"), "base", "tip");
+  ASSERT_TRUE(chain.joints()[2].continuous);
+  Eigen::VectorXd q(3);
+  q << 0.2, 0.5, 2.0 * M_PI + 0.4;  // two-joint planar arm, the last joint one turn on
+  const NumericIK ik(chain);
+  IkOptions options;
+  options.mode = IkOptions::Mode::PositionOnly;
+  Eigen::VectorXd seed = q;
+  seed[2] += 0.05;
+  const IkResult result = ik.solve(chain.fk(q), seed, options);
+  ASSERT_TRUE(result.success);
+  EXPECT_TRUE(chain.withinLimits(result.q));
+  EXPECT_NEAR(result.q[2], q[2], 0.2);
+}
+
 TEST(NumericIK, UnreachableTargetTimesOut)
 {
   const KinematicChain chain = KinematicChain::fromUrdf(fixture("panda.urdf"), "panda_link0", "panda_link8");

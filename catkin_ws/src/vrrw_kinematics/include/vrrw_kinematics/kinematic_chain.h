@@ -44,11 +44,11 @@ public:
   Eigen::VectorXd lowerLimits() const;
   Eigen::VectorXd upperLimits() const;
   Eigen::VectorXd midLimits() const;
-  /// \brief True when every q_i lies within its limits (with `tolerance`) and is finite.
+  /// \brief True when every q_i is finite and within its limits (with `tolerance`); continuous joints have none.
   bool withinLimits(const Eigen::VectorXd& q, double tolerance = 1e-9) const;
   /// \brief Name of the first joint outside its limits, or "" when none.
   std::string jointOutsideLimits(const Eigen::VectorXd& q, double tolerance = 1e-9) const;
-  /// \brief Uniform sample within limits.
+  /// \brief Uniform sample within limits ([-pi, pi] for continuous joints).
   Eigen::VectorXd randomState(std::mt19937_64& rng) const;
 
   /// \brief Pose of the tip in the base frame.
