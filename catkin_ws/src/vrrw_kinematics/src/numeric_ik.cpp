@@ -77,10 +77,22 @@ bool NumericIK::descend(const Eigen::Isometry3d& target, const IkOptions& option
       return true;
     const double norm = e.residual.norm();
     const double damping = 1e-6 + 1e-3 * norm * norm;
-    Eigen::Matrix<double, 6, 6> a = jac * jac.transpose();
-    a.diagonal().array() += damping;
-    Eigen::VectorXd step = jac.topRows(rows).transpose() *
-                           a.topLeftCorner(rows, rows).ldlt().solve(e.residual.head(rows));
+    const auto dampedStep = [&](const Eigen::Matrix<double, 6, Eigen::Dynamic>& j) {
+      Eigen::Matrix<double, 6, 6> a = j * j.transpose();
+      a.diagonal().array() += damping;
+      return Eigen::VectorXd(j.topRows(rows).transpose() * a.topLeftCorner(rows, rows).ldlt().solve(e.residual.head(rows)));
+    };
+    Eigen::VectorXd step = dampedStep(jac);
+    // Joints at a limit that the step pushes further out are taken out of this step (active set).
+    bool blocked = false;
+    for (Eigen::Index i = 0; i < step.size(); ++i)
+      if ((q[i] <= lower_[i] && step[i] < 0.0) || (q[i] >= upper_[i] && step[i] > 0.0))
+      {
+        jac.col(i).setZero();
+        blocked = true;
+      }
+    if (blocked)
+      step = dampedStep(jac);
     const double largest = step.cwiseAbs().maxCoeff();
     if (largest > kMaxStep)
       step *= kMaxStep / largest;

@@ -9,7 +9,8 @@
 namespace vrrw_kinematics
 {
 /// \brief Numerical IK for any serial chain: damped least squares (Levenberg-Marquardt) Newton steps
-/// clamped to the joint limits, with random restarts until a time limit.
+/// clamped to the joint limits (joints held at a limit leave the step, an active set), with random
+/// restarts until a time limit.
 ///
 /// The search starts from the seed, so the first solution found is normally the nearest one; with
 /// IkOptions::nearest it goes on until the timeout and returns the solution nearest the seed.
