@@ -234,6 +234,43 @@ Dmp Dmp::learn(const vrrw_trajectory::JointTrajectory& demo, const DmpParameters
              std::move(amplitude), std::move(scaling), duration, std::move(origin), std::move(warnings));
 }
 
+std::vector<std::string> Dmp::planWarnings(const RolloutRequest& request) const
+{
+  const std::size_t n = dofs();
+  const std::vector<double>& start = request.start.empty() ? demo_start_ : request.start;
+  const std::vector<double>& goal = request.goal.empty() ? demo_goal_ : request.goal;
+  checkVector(start, n, "start");
+  checkVector(goal, n, "goal");
+  const double ratio = parameters_.degenerate_ratio;
+  std::vector<std::string> warnings;
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    const double amplitude = demo_amplitude_[j];
+    const double demo_offset = demo_goal_[j] - demo_start_[j];
+    if (joint_scaling_[j] != AmplitudeScaling::goal_offset || !(amplitude > 0.0) ||
+        std::abs(demo_offset) <= ratio * amplitude)
+      continue;
+    const double offset = goal[j] - start[j];
+    const std::string joint = "joint '" + joint_names_[j] + "': ";
+    if (std::abs(offset) <= ratio * amplitude)
+    {
+      warnings.push_back(joint + "new g - x0 = " + format(offset) + " is within " + format(100.0 * ratio) +
+                         "% of the demonstrated range " + format(amplitude) +
+                         ", so the forcing term (scaled by g - x0) vanishes and the demonstrated shape is lost; "
+                         "learn with --scaling amplitude to keep it around any goal");
+      continue;
+    }
+    const double factor = offset / demo_offset;
+    if (factor < 0.0 || factor > kMaxGoalScaling)
+      warnings.push_back(joint + "goal scaling factor (g - x0)/(g_demo - x0_demo) = " + format(factor) +
+                         (factor < 0.0 ? (factor < -kMaxGoalScaling ? " mirrors and amplifies" : " mirrors") :
+                                         " amplifies") +
+                         " the demonstrated shape (demo g - x0 = " + format(demo_offset) + ", new " +
+                         format(offset) + ")");
+  }
+  return warnings;
+}
+
 DmpState Dmp::begin(const std::vector<double>& start, const std::vector<double>& goal, double tau) const
 {
   const std::size_t n = dofs();

@@ -212,6 +212,92 @@ TEST(Dmp, GoalEqualToStartWarnsAndAmplitudeScalingReproduces)
   EXPECT_NEAR(moved.points.back().positions[2], -0.2, 1e-3);
 }
 
+TEST(Dmp, PlanWarnsWhenTheNewGoalEqualsTheNewStart)
+{
+  const Dmp dmp = Dmp::learn(sample(SmoothDemo{}, 400, 0.2), DmpParameters{});
+  ASSERT_TRUE(dmp.warnings().empty());
+  EXPECT_TRUE(dmp.planWarnings(RolloutRequest{}).empty());
+  const auto& x0 = dmp.demoStart();
+  const auto& range = dmp.demoAmplitude();
+  const double ratio = dmp.parameters().degenerate_ratio;
+  RolloutRequest request = fineRollout();
+  request.start = x0;
+  request.goal = dmp.demoGoal();
+  request.goal[1] = x0[1];                               // g == x0 exactly
+  request.goal[3] = x0[3] + 0.99 * ratio * range[3];     // just inside the tolerance
+  request.goal[4] = x0[4] - 1.01 * ratio * range[4];     // just outside, same sign as the demo (factor > 0)
+  ASSERT_LT(dmp.demoGoal()[4] - x0[4], 0.0);
+  const auto warnings = dmp.planWarnings(request);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0].find("joint 'joint_2': new g - x0 = 0 is within 5% of the demonstrated range "), 0u)
+      << warnings[0];
+  EXPECT_NE(warnings[0].find("learn with --scaling amplitude"), std::string::npos) << warnings[0];
+  EXPECT_EQ(warnings[1].find("joint 'joint_4': new g - x0 = "), 0u) << warnings[1];
+
+  // the warning is true: joint 2 moves straight to its goal (here: not at all), the demonstration did not
+  const auto rollout = dmp.rollout(request);
+  double excursion = 0.0;
+  for (const auto& point : rollout.points)
+    excursion = std::max(excursion, std::abs(point.positions[1] - x0[1]));
+  EXPECT_EQ(excursion, 0.0);
+  EXPECT_GT(range[1], 0.1);
+
+  // amplitude scaling keeps the shape: nothing to warn about
+  DmpParameters amplitude;
+  amplitude.scaling = AmplitudeScaling::demo_amplitude;
+  EXPECT_TRUE(Dmp::learn(sample(SmoothDemo{}, 400, 0.2), amplitude).planWarnings(request).empty());
+
+  RolloutRequest wrong;
+  wrong.goal = { 1.0 };
+  EXPECT_EQ(errorOf([&] { dmp.planWarnings(wrong); }), "goal: 1 values for 6 joints");
+}
+
+TEST(Dmp, PlanWarnsWhenTheGoalScalingMirrorsOrAmplifiesTheShape)
+{
+  const Dmp dmp = Dmp::learn(sample(SmoothDemo{}, 400, 0.2), DmpParameters{});
+  RolloutRequest request = fineRollout();
+  request.start = dmp.demoStart();
+  for (double& q : request.start)
+    q += 0.1;
+  const std::vector<double> factors = { -0.5, 3.5, 3.0, -4.0, 1.0, 2.9 };
+  request.goal.resize(6);
+  for (std::size_t j = 0; j < 6; ++j)
+    request.goal[j] = request.start[j] + factors[j] * (dmp.demoGoal()[j] - dmp.demoStart()[j]);
+  const auto warnings = dmp.planWarnings(request);
+  ASSERT_EQ(warnings.size(), 3u);
+  EXPECT_EQ(warnings[0].find("joint 'joint_1': goal scaling factor (g - x0)/(g_demo - x0_demo) = -0.5 mirrors the "
+                             "demonstrated shape"),
+            0u)
+      << warnings[0];
+  EXPECT_EQ(warnings[1].find("joint 'joint_2': goal scaling factor (g - x0)/(g_demo - x0_demo) = 3.5 amplifies"), 0u)
+      << warnings[1];
+  EXPECT_EQ(warnings[2].find("joint 'joint_4': goal scaling factor (g - x0)/(g_demo - x0_demo) = -4 mirrors and "
+                             "amplifies"),
+            0u)
+      << warnings[2];
+
+  // the factor is what the rollout does: joint 2's path is the demonstrated one stretched 3.5 times
+  const auto original = dmp.rollout(fineRollout());
+  const auto scaled = dmp.rollout(request);
+  for (std::size_t k = 0; k < std::min(original.points.size(), scaled.points.size()); k += 50)
+    EXPECT_NEAR(scaled.points[k].positions[1] - request.start[1],
+                3.5 * (original.points[k].positions[1] - dmp.demoStart()[1]), 1e-9);
+}
+
+TEST(Dmp, PlanDoesNotRepeatLearnTimeWarnings)
+{
+  auto demo = sample(SmoothDemo{}, 400, 0.2);
+  for (auto& point : demo.points)  // joint 3 goes out and comes back: learn() already warns
+    point.positions[2] = 0.4 + 0.6 * std::pow(std::sin(M_PI * point.time / 2.0), 2);
+  const Dmp dmp = Dmp::learn(demo, DmpParameters{});
+  ASSERT_EQ(dmp.warnings().size(), 1u);
+  RolloutRequest request;
+  request.start = dmp.demoStart();
+  request.goal = dmp.demoGoal();
+  request.goal[2] += 0.5;
+  EXPECT_TRUE(dmp.planWarnings(request).empty());
+}
+
 TEST(Dmp, StepIsAllocationFreeAndMatchesRollout)
 {
   const Dmp dmp = Dmp::learn(sample(SmoothDemo{}, 200, 0.2), DmpParameters{});

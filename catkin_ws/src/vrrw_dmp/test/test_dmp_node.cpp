@@ -112,6 +112,7 @@ TEST_F(DmpNodeTest, LearnsFromBagAndPlansToNewGoal)
 
   const auto reproduced = plan({});
   ASSERT_TRUE(reproduced.success) << reproduced.message;
+  EXPECT_EQ(reproduced.message.find("warning"), std::string::npos) << reproduced.message;
   double sum = 0.0;
   std::size_t count = 0;
   for (const auto& point : reproduced.trajectory.points)
@@ -175,6 +176,18 @@ TEST_F(DmpNodeTest, LearnsFromCsvAndFromMessage)
   ASSERT_TRUE(planned.success) << planned.message;
   EXPECT_NEAR(planned.trajectory.points.back().positions[0], 1.0, 1e-3);
   EXPECT_NEAR(planned.trajectory.points.back().positions[1], -1.0, 1e-3);
+  // b: g - x0 = -0.9 against the demonstrated 0.3, the shape is mirrored (a: 1.3 / 0.55, fine)
+  EXPECT_NE(planned.message.find("; warning: joint 'b': goal scaling factor (g - x0)/(g_demo - x0_demo) = -3 mirrors"),
+            std::string::npos)
+      << planned.message;
+  EXPECT_EQ(planned.message.find("joint 'a'"), std::string::npos) << planned.message;
+
+  to_goal.goal = { 1.0, demo.points.front().positions[1] };  // b: goal == start
+  const auto flat = plan(to_goal);
+  ASSERT_TRUE(flat.success) << flat.message;
+  EXPECT_NE(flat.message.find("; warning: joint 'b': new g - x0 = 0 is within 5%"), std::string::npos) << flat.message;
+  EXPECT_NE(flat.message.find("--scaling amplitude"), std::string::npos) << flat.message;
+  EXPECT_EQ(flat.message.find("joint 'a'"), std::string::npos) << flat.message;
 }
 
 TEST_F(DmpNodeTest, BadRequestsAreAnsweredAndTheNodeStaysUp)

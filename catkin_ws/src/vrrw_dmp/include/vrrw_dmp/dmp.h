@@ -66,6 +66,9 @@ struct RolloutRequest
 /// degenerate_ratio times the joint's demonstrated range and adds a warning. The remedy is
 /// AmplitudeScaling::demo_amplitude (or ::automatic for just those joints): the forcing term is then
 /// scaled by the demonstrated range, a constant, and the joint's motion is reproduced around any goal.
+/// The same happens at plan time to a joint that was learned with a proper g - x0 when the NEW goal
+/// equals its new start, and a new g - x0 of the opposite sign or more than kMaxGoalScaling times the
+/// demonstrated one mirrors or amplifies the shape: planWarnings() reports both, per joint.
 ///
 /// Rollout: the exact solution of the linear spring-damper over each step with the forcing term
 /// linear in between (SpringDamperStep), exact exponential decay of the phase; one forcing
@@ -89,6 +92,15 @@ public:
   /// settled at its goal within the request's tolerances (at most 4 tau). Samples every dt.
   vrrw_trajectory::JointTrajectory rollout(const RolloutRequest& request) const;
 
+  /// \brief One line per concern about rolling out to \a request's start and goal (empty: as
+  /// demonstrated), for the joints scaled by g - x0 whose demonstration moved them (|g_demo - x0_demo|
+  /// above degenerate_ratio times their range; the others are learn()'s warnings):
+  /// - the new |g - x0| is within degenerate_ratio of the demonstrated range: the learned shape vanishes;
+  /// - the goal scaling factor (g - x0) / (g_demo - x0_demo) is negative (the shape is mirrored) or above
+  ///   kMaxGoalScaling (amplified).
+  /// Same format as warnings(). Throws DmpError for a start or goal of the wrong size or not finite.
+  std::vector<std::string> planWarnings(const RolloutRequest& request) const;
+
   /// \brief A fresh state at \a start (at rest) heading for \a goal; allocates. Throws DmpError.
   DmpState begin(const std::vector<double>& start, const std::vector<double>& goal, double tau) const;
   /// \brief Advances \a state by \a dt seconds. Allocation-free; call it from a control loop.
@@ -109,6 +121,10 @@ public:
   const DmpProvenance& provenance() const { return provenance_; }
   /// \brief One line per concern found while learning (e.g. g == x0 in a joint).
   const std::vector<std::string>& warnings() const { return warnings_; }
+
+  /// A goal scaling factor (g - x0) / (g_demo - x0_demo) above this amplifies the demonstrated shape
+  /// enough that planWarnings() reports it.
+  static constexpr double kMaxGoalScaling = 3.0;
 
 private:
   /// Steps longer than this fraction of the basis spacing (in time) are split, so that the forcing

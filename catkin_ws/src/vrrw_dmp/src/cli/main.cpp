@@ -91,6 +91,8 @@ int rollout(int argc, char** argv)
     throw OptionError("--tau: must be > 0");
   request.dt = options.number("dt", request.dt);
   const auto trajectory = dmp.rollout(request);
+  for (const auto& warning : dmp.planWarnings(request))
+    std::cerr << "vrrw dmp: warning: " << warning << "\n";
   vrrw_trajectory::writeCsv(out, trajectory);
   std::cout << "rolled out " << trajectory.points.size() << " samples over " << trajectory.duration() << " s -> "
             << out << "\n";

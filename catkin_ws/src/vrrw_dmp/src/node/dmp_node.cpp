@@ -89,6 +89,11 @@ private:
       response.success = true;
       response.message = "planned " + std::to_string(response.trajectory.points.size()) + " points over " +
                          std::to_string(response.trajectory.points.back().time_from_start.toSec()) + " s";
+      for (const auto& warning : dmp_->planWarnings(rollout))
+      {
+        ROS_WARN_STREAM("dmp_node: plan: " << warning);
+        response.message += "; warning: " + warning;
+      }
     }
     catch (const std::exception& e)
     {
