@@ -63,6 +63,8 @@ IkResult IkSolver::solve(const Eigen::Isometry3d& target, const Eigen::VectorXd&
         result.code = ErrorCode::Ok;
         return result;
       }
+      // Near a wrist singularity the closed form loses digits: polish with Newton steps from it.
+      return numeric_.solve(target, result.q, options);
     }
     result.code = ErrorCode::NoSolution;
     result.message = "no IK solution for tip " + chain_.tipLink() + ": pose unreachable within joint limits";

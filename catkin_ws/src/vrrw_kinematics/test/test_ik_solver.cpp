@@ -23,6 +23,17 @@ TEST(IkSolver, Ur5eUsesClosedFormAndReturnsNearestSolution)
   }
 }
 
+TEST(IkSolver, Ur5eAtWristSingularity)
+{
+  const IkSolver solver(KinematicChain::fromUrdf(fixture("ur5e.urdf"), "base_link", "tool0"));
+  Eigen::VectorXd q(6);
+  q << 0.4, -1.2, 1.1, -0.7, 0.0, 0.3;  // wrist 2 at zero: wrist 1 and wrist 3 axes line up
+  const IkResult result = solver.solve(solver.chain().fk(q), q);
+  ASSERT_TRUE(result.success) << result.message;
+  EXPECT_LT(result.position_error, 1e-5);
+  EXPECT_LT(result.orientation_error, 1e-5);
+}
+
 TEST(IkSolver, PandaFallsBackToNumeric)
 {
   const IkSolver solver(KinematicChain::fromUrdf(fixture("panda.urdf"), "panda_link0", "panda_link8"));
