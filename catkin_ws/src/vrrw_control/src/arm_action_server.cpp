@@ -1,3 +1,4 @@
+#include <vrrw_trajectory/msg_conversions.h>
 #include <vrrw_control/arm_action_server.h>
 #include <vrrw_control/msg_conversions.h>
 
@@ -78,8 +79,8 @@ void ArmActionServer::onGoal(GoalHandle gh)
   JointSample real_state(arm_.joints().size());
   if (measured)
     real_state.positions = realArm();
-  const Validation v = measured ? arm_.validator().validate(fromMsg(goal->trajectory), real_state) :
-                                  arm_.validate(fromMsg(goal->trajectory), toTime(now));
+  const Validation v = measured ? arm_.validator().validate(vrrw_trajectory::fromMsg(goal->trajectory), real_state) :
+                                  arm_.validate(vrrw_trajectory::fromMsg(goal->trajectory), toTime(now));
   if (!v.ok())
     return reject(gh, codeOf(v.error), v.message);
 

@@ -3,22 +3,6 @@
 
 namespace vrrw_control
 {
-vrrw_trajectory::JointTrajectory fromMsg(const trajectory_msgs::JointTrajectory& msg)
-{
-  vrrw_trajectory::JointTrajectory t;
-  t.joint_names = msg.joint_names;
-  for (const auto& p : msg.points)
-  {
-    vrrw_trajectory::TrajectoryPoint q;
-    q.time = p.time_from_start.toSec();
-    q.positions = p.positions;
-    q.velocities = p.velocities;
-    q.accelerations = p.accelerations;
-    t.points.push_back(std::move(q));
-  }
-  return t;
-}
-
 trajectory_msgs::JointTrajectoryPoint toPointMsg(const JointSample& sample, double time_from_start)
 {
   trajectory_msgs::JointTrajectoryPoint p;

@@ -1,4 +1,5 @@
 // Node test (rostest, real master): controller_node in fake mode for two robots.
+#include <vrrw_trajectory/msg_conversions.h>
 #include <actionlib/client/simple_action_client.h>
 #include <cmath>
 #include <control_msgs/GripperCommandAction.h>
@@ -74,7 +75,7 @@ void reproduce(Robot& robot, double rate)
   EXPECT_EQ(robot.arm.getResult()->error_code, Result::SUCCESSFUL);
   ros::Duration(0.1).sleep();
 
-  const vrrw_control::TrajectoryInterpolator reference(vrrw_control::fromMsg(g.trajectory));
+  const vrrw_control::TrajectoryInterpolator reference(vrrw_trajectory::fromMsg(g.trajectory));
   const auto run = robot.states.since(start - ros::Duration(0.1));
   double max_error = 0.0;
   size_t during = 0;

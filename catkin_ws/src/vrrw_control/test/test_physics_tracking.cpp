@@ -2,6 +2,7 @@
 // (approach, descend, dwell, lift) runs on every robot in ~robots at once and is tracked within
 // 2e-3 rad with rigid gains, measured at every joint_states sample of the physics node against the
 // interpolant at its stamp.
+#include <vrrw_trajectory/msg_conversions.h>
 #include <actionlib/client/simple_action_client.h>
 #include <algorithm>
 #include <cmath>
@@ -84,7 +85,7 @@ TEST(PhysicsTracking, PickMotionWithinTwoMilliradians)
 
   for (auto& a : arms)
   {
-    const vrrw_control::TrajectoryInterpolator reference(vrrw_control::fromMsg(a->goal.trajectory));
+    const vrrw_control::TrajectoryInterpolator reference(vrrw_trajectory::fromMsg(a->goal.trajectory));
     double max_error = 0.0, sum_sq = 0.0, worst_t = 0.0, worst_v = 0.0;
     size_t n = 0, worst_joint = 0;
     std::vector<double> sample_max;

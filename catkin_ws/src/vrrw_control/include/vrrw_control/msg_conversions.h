@@ -4,13 +4,9 @@
 #include <trajectory_msgs/JointTrajectory.h>
 #include <vrrw_control/joint_sample.h>
 #include <vrrw_control/tolerances.h>
-#include <vrrw_trajectory/joint_trajectory.h>
 
 namespace vrrw_control
 {
-/// \brief A ROS trajectory as the ROS-free type; times are time_from_start in seconds.
-vrrw_trajectory::JointTrajectory fromMsg(const trajectory_msgs::JointTrajectory& msg);
-
 /// \brief A JointSample as a trajectory point (effort left empty).
 trajectory_msgs::JointTrajectoryPoint toPointMsg(const JointSample& sample, double time_from_start = 0.0);
 

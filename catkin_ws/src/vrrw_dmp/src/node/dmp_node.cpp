@@ -5,7 +5,8 @@
 
 #include <ros/ros.h>
 
-#include "ros_conversions.h"
+#include "bag_reader.h"
+#include <vrrw_trajectory/msg_conversions.h>
 #include "vrrw_dmp/Learn.h"
 #include "vrrw_dmp/Plan.h"
 #include "vrrw_dmp/dmp.h"
@@ -85,7 +86,7 @@ private:
       rollout.goal = request.goal;
       rollout.tau = request.tau;
       rollout.dt = request.dt == 0.0 ? dt_ : request.dt;
-      response.trajectory = toMessage(dmp_->rollout(rollout));
+      response.trajectory = vrrw_trajectory::toMsg(dmp_->rollout(rollout));
       response.success = true;
       response.message = "planned " + std::to_string(response.trajectory.points.size()) + " points over " +
                          std::to_string(response.trajectory.points.back().time_from_start.toSec()) + " s";
@@ -125,7 +126,7 @@ private:
       return vrrw_trajectory::readCsv(request.csv_path);
     }
     source = "message";
-    return fromMessage(request.trajectory);
+    return vrrw_trajectory::fromMsg(request.trajectory);
   }
 
   DmpParameters parameters(const Learn::Request& request) const

@@ -1,4 +1,4 @@
-#include "ros_conversions.h"
+#include "bag_reader.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -6,42 +6,10 @@
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/JointState.h>
+#include <vrrw_trajectory/msg_conversions.h>
 
 namespace vrrw_dmp
 {
-vrrw_trajectory::JointTrajectory fromMessage(const trajectory_msgs::JointTrajectory& message)
-{
-  vrrw_trajectory::JointTrajectory trajectory;
-  trajectory.joint_names = message.joint_names;
-  for (const auto& in : message.points)
-  {
-    vrrw_trajectory::TrajectoryPoint point;
-    point.time = in.time_from_start.toSec();
-    point.positions = in.positions;
-    point.velocities = in.velocities;
-    point.accelerations = in.accelerations;
-    trajectory.points.push_back(std::move(point));
-  }
-  return trajectory;
-}
-
-trajectory_msgs::JointTrajectory toMessage(const vrrw_trajectory::JointTrajectory& trajectory)
-{
-  trajectory_msgs::JointTrajectory message;
-  message.joint_names = trajectory.joint_names;
-  message.points.reserve(trajectory.points.size());
-  for (const auto& in : trajectory.points)
-  {
-    trajectory_msgs::JointTrajectoryPoint point;
-    point.positions = in.positions;
-    point.velocities = in.velocities;
-    point.accelerations = in.accelerations;
-    point.time_from_start = ros::Duration(in.time);
-    message.points.push_back(std::move(point));
-  }
-  return message;
-}
-
 namespace
 {
 void appendJointState(const sensor_msgs::JointState& state, double time, std::vector<std::string>& names,
@@ -103,7 +71,7 @@ vrrw_trajectory::JointTrajectory readBag(const std::string& path, const std::str
     }
     else if (const auto plan = message.instantiate<trajectory_msgs::JointTrajectory>())
     {
-      return fromMessage(*plan);
+      return vrrw_trajectory::fromMsg(*plan);
     }
     else
     {
