@@ -9,8 +9,8 @@ namespace
 {
 int usage()
 {
-  std::cerr << "usage: vrrw_scene SCENE [--urdf-out FILE|-] [--timing] [--no-cache]\n"
-               "  SCENE is a shipped scene name or a scene YAML path\n";
+  std::cerr << "usage: vrrw_scene SCENE [--urdf-out FILE|-] [--robots] [--timing] [--no-cache]\n"
+               "  SCENE is a shipped scene name or a scene YAML path; --robots prints the robot names\n";
   return 2;
 }
 
@@ -32,12 +32,14 @@ int main(int argc, char** argv)
   if (argc < 2 || argv[1][0] == '-')
     return usage();
   std::string scene_name = argv[1], urdf_out;
-  bool timing = false;
+  bool timing = false, list_robots = false;
   vrrw_scene::LoadOptions options;
   for (int i = 2; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--urdf-out") && i + 1 < argc)
       urdf_out = argv[++i];
+    else if (!std::strcmp(argv[i], "--robots"))
+      list_robots = true;
     else if (!std::strcmp(argv[i], "--timing"))
       timing = true;
     else if (!std::strcmp(argv[i], "--no-cache"))
@@ -59,6 +61,12 @@ int main(int argc, char** argv)
       return 0;
     }
     const auto scene = vrrw_scene::loadScene(scene_name, options);
+    if (list_robots)
+    {
+      for (const auto& robot : scene.robots)
+        std::cout << robot.name << "\n";
+      return 0;
+    }
     summarize(scene);
     if (urdf_out == "-")
       std::cout << scene.urdf;

@@ -141,4 +141,4 @@ class Bringup(unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rostest.rosrun('vrrw_scene', 'bringup_check', Bringup)
+    rostest.rosrun('vrrw_bringup', 'bringup_check', Bringup)
