@@ -10,6 +10,7 @@
 #include <vrrw_control/physics_robot.h>
 #include <vrrw_control/real_robot.h>
 #include <vrrw_control/ros_drive_link.h>
+#include <vrrw_scene/robot_config.h>
 #include <vrrw_scene/scene_loader.h>
 #include <urdf_parser/urdf_parser.h>
 
@@ -20,10 +21,11 @@ namespace
 /// What the node needs to know of its robot: from the scene (~scene) or from parameters.
 struct RobotDescription
 {
-  std::string urdf, config_file;
+  std::string urdf;
   std::vector<std::string> arm_joints;
   std::string gripper_joint;
   std::map<std::string, double> initial;
+  std::map<std::string, double> acceleration_limits;
 };
 
 RobotDescription describe(ros::NodeHandle& nh, ros::NodeHandle& pnh, const std::string& name)
@@ -36,8 +38,8 @@ RobotDescription describe(ros::NodeHandle& nh, ros::NodeHandle& pnh, const std::
     const auto* robot = scene.robot(name);
     if (!robot)
       throw std::runtime_error("~scene " + scene_name + ": robot " + name + ": not in the scene");
-    d = { scene.urdf, robot->config_file, robot->arm_joints,
-          robot->gripper_joints.empty() ? "" : robot->gripper_joints.front(), robot->initial_positions };
+    d = { scene.urdf, robot->arm_joints, robot->gripper_joints.empty() ? "" : robot->gripper_joints.front(),
+          robot->initial_positions, robot->acceleration_limits };
   }
   else
   {
@@ -50,7 +52,9 @@ RobotDescription describe(ros::NodeHandle& nh, ros::NodeHandle& pnh, const std::
     pnh.getParam("arm_joints", d.arm_joints);
     const auto model = urdf::parseURDF(d.urdf);
     d.gripper_joint = model && model->getJoint(p + "finger_joint") ? p + "finger_joint" : "";
-    pnh.getParam("config_file", d.config_file);
+    std::string config_file;
+    if (pnh.getParam("config_file", config_file))
+      d.acceleration_limits = vrrw_scene::loadAccelerationLimits(config_file, p);
   }
   pnh.getParam("gripper_joint", d.gripper_joint);
   std::vector<double> initial;
@@ -90,9 +94,7 @@ int main(int argc, char** argv)
   try
   {
     robot = describe(nh, pnh, name);
-    limits = loadJointLimits(robot.urdf, robot.arm_joints);
-    if (!robot.config_file.empty())
-      loadAccelerationLimits(robot.config_file, name + "_", limits);
+    limits = loadJointLimits(robot.urdf, robot.arm_joints, robot.acceleration_limits);
   }
   catch (const std::exception& e)
   {

@@ -7,6 +7,7 @@
 #include <tf2_eigen/tf2_eigen.h>
 
 #include "vrrw_kinematics/motion_planner.h"
+#include "vrrw_kinematics/scene_state.h"
 #include "vrrw_kinematics/state_checker.h"
 
 namespace vrrw_kinematics
@@ -36,7 +37,7 @@ RobotServices::RobotServices(ros::NodeHandle& nh, const vrrw_scene::Robot& robot
     arm_variables_.push_back(model.variableIndex(joint));
     timing.max_velocity.push_back(model.joints()[model.jointIndex(joint)].max_velocity);
   }
-  timing.max_acceleration = loadAccelerationLimits(robot.config_file, robot.arm_joints, robot.name + "_");
+  timing.max_acceleration = armAccelerationLimits(robot);
   timing_ = std::make_unique<TimeParameterization>(timing);
   timing.max_deviation = 0.0;
   timing_exact_ = std::make_unique<TimeParameterization>(timing);

@@ -120,6 +120,25 @@ TEST(ShippedScenes, FastCheckerAgreesWithFullCheckForEveryArm)
   }
 }
 
+TEST(ShippedScenes, ArmAccelerationLimitsFollowTheArmOrder)
+{
+  EXPECT_EQ(armAccelerationLimits(*multibot().robot("ur5e")), std::vector<double>(6, 3.14159265));
+  EXPECT_EQ(armAccelerationLimits(*multibot().robot("fetch")),
+            (std::vector<double>{ 1.5, 1.0, 1.5, 1.5, 1.5, 2.5, 2.5 }));  // urdf/config/fetch.yaml
+  vrrw_scene::Robot robot = *multibot().robot("ur3e");
+  robot.acceleration_limits.erase("ur3e_elbow_joint");
+  try
+  {
+    armAccelerationLimits(robot);
+    FAIL();
+  }
+  catch (const KinematicsError& e)
+  {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+    EXPECT_NE(std::string(e.what()).find("ur3e_elbow_joint"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ShippedScenes, PlannedTrajectoriesAreCollisionFreeAndWithinLimits)
 {
   CollisionWorld world = CollisionWorld::fromScene(multibot());
@@ -131,7 +150,7 @@ TEST(ShippedScenes, PlannedTrajectoriesAreCollisionFreeAndWithinLimits)
     TimingOptions timing;
     for (const std::string& joint : robot.arm_joints)
       timing.max_velocity.push_back(world.model().joints()[world.model().jointIndex(joint)].max_velocity);
-    timing.max_acceleration = loadAccelerationLimits(robot.config_file, robot.arm_joints, robot.name + "_");
+    timing.max_acceleration = armAccelerationLimits(robot);
     timing.max_deviation = 0.0;
     const TimeParameterization parameterization(timing);
     Eigen::VectorXd home(static_cast<Eigen::Index>(robot.arm_joints.size()));

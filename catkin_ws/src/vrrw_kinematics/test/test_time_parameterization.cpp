@@ -135,22 +135,3 @@ TEST(TimeParameterization, BadInputIsRejected)
   EXPECT_THROW(timing.compute({ vec({ 0.0 }) }, { "j", "k" }), KinematicsError);
   EXPECT_EQ(timing.compute({ vec({ 0.5 }), vec({ 0.5 }) }, { "j" }).points.size(), 1u);
 }
-
-TEST(AccelerationLimits, ReadsConfigAndNamesMissingJoints)
-{
-  const std::string file = std::string(TEST_DATA) + "/ur5e_limits.yaml";
-  const auto limits = loadAccelerationLimits(file, { "ur5e_elbow_joint", "ur5e_wrist_3_joint" }, "ur5e_");
-  ASSERT_EQ(limits.size(), 2u);
-  EXPECT_NEAR(limits[0], 3.14159265, 1e-12);
-  EXPECT_NEAR(limits[1], 2.0, 1e-12);
-  try
-  {
-    loadAccelerationLimits(file, { "ur5e_gripper_joint" }, "ur5e_");
-    FAIL();
-  }
-  catch (const KinematicsError& e)
-  {
-    EXPECT_NE(std::string(e.what()).find("gripper_joint"), std::string::npos);
-  }
-  EXPECT_THROW(loadAccelerationLimits("/nonexistent.yaml", { "a" }, ""), KinematicsError);
-}

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "vrrw_scene/robot_config.h"
+
 #include "catalog.h"
 #include "object_geometry.h"
 #include "scene_spec.h"
@@ -165,6 +167,29 @@ void setInitial(const urdf::ModelInterface& model, const std::string& prefix, co
   }
 }
 
+/// Each movable joint's limit: a gripper joint's from the gripper config, every other one's from the model config.
+std::map<std::string, double> accelerationLimits(const Robot& robot, const std::string& gripper_config)
+{
+  const std::string prefix = robot.name + "_";
+  const auto arm = loadAccelerationLimits(robot.config_file, prefix);
+  const auto hand = gripper_config.empty() ? arm : loadAccelerationLimits(gripper_config, prefix);
+  std::map<std::string, double> limits;
+  for (const auto& entry : robot.initial_positions)
+  {
+    const std::string& joint = entry.first;
+    const bool in_gripper = !gripper_config.empty() &&
+                            std::count(robot.gripper_joints.begin(), robot.gripper_joints.end(), joint) > 0;
+    const auto& source = in_gripper ? hand : arm;
+    const auto limit = source.find(joint);
+    if (limit == source.end())
+      throw SceneError((in_gripper ? gripper_config : robot.config_file) + ": acceleration_limits." +
+                       joint.substr(prefix.size()) + ": missing for joint '" + joint + "' of robot '" + robot.name +
+                       "'");
+    limits[joint] = limit->second;
+  }
+  return limits;
+}
+
 Robot makeRobot(const urdf::ModelInterface& model, const RobotSpec& spec, const Catalog& catalog, const std::string& root)
 {
   Robot robot;
@@ -207,6 +232,12 @@ Robot makeRobot(const urdf::ModelInterface& model, const RobotSpec& spec, const 
   if (model_entry != catalog.robots.end())
     setInitial(model, prefix, model_entry->second.initial, spec.field + "(catalogue)", robot);
   setInitial(model, prefix, spec.initial, spec.field, robot);
+  if (model_entry != catalog.robots.end())
+  {
+    const auto gripper = catalog.grippers.find(spec.gripper);
+    const bool has_config = gripper != catalog.grippers.end() && !gripper->second.config.empty();
+    robot.acceleration_limits = accelerationLimits(robot, has_config ? root + "/urdf/" + gripper->second.config : "");
+  }
   return robot;
 }
 }  // namespace

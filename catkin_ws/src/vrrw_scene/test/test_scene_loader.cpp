@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "vrrw_scene/robot_config.h"
 #include "vrrw_scene/scene_loader.h"
 
 namespace fs = std::filesystem;
@@ -43,6 +44,43 @@ std::string errorOf(const std::string& file)
   }
   ADD_FAILURE() << file << " loaded without an error";
   return "";
+}
+
+/// A root whose urdf/config/`config` holds `text`; every other file is the repository's.
+LoadOptions rootWithConfig(const std::string& config, const std::string& text)
+{
+  const fs::path repository = VRRW_TEST_ROOT;
+  const fs::path root = fs::temp_directory_path() / ("vrrw_scene_config_" + std::to_string(getpid()) + "_" + config);
+  fs::remove_all(root);
+  fs::create_directories(root / "urdf" / "config");
+  fs::create_symlink(repository / ".venv", root / ".venv");
+  for (const auto& entry : fs::directory_iterator(repository / "urdf"))
+    if (entry.path().filename() != "config")
+      fs::create_symlink(entry.path(), root / "urdf" / entry.path().filename());
+  for (const auto& entry : fs::directory_iterator(repository / "urdf" / "config"))
+    fs::copy_file(entry.path(), root / "urdf" / "config" / entry.path().filename());
+  std::ofstream(root / "urdf" / "config" / config) << text;
+  LoadOptions options = testOptions();
+  options.root = root.string();
+  return options;
+}
+
+/// The message pick_place_drill gets under a root whose `config` holds `text`.
+std::string configErrorOf(const std::string& config, const std::string& text)
+{
+  const LoadOptions options = rootWithConfig(config, text);
+  std::string message;
+  try
+  {
+    loadScene("pick_place_drill", options);
+    ADD_FAILURE() << config << " loaded without an error";
+  }
+  catch (const SceneError& e)
+  {
+    message = e.what();
+  }
+  fs::remove_all(options.root);
+  return message;
 }
 
 void expectMentions(const std::string& message, std::initializer_list<const char*> parts)
@@ -108,6 +146,34 @@ TEST(BadScene, UnknownSceneNameListsShippedScenes)
   }
 }
 
+TEST(BadConfig, MissingAccelerationLimitNamesFileFieldAndJoint)
+{
+  const std::string ur5e = "acceleration_limits:\n  shoulder_pan_joint: 3.0\n  shoulder_lift_joint: 3.0\n"
+                           "  elbow_joint: 3.0\n  wrist_1_joint: 3.0\n  wrist_2_joint: 3.0\n";
+  expectMentions(configErrorOf("ur5e.yaml", ur5e),
+                 { "config/ur5e.yaml: acceleration_limits.wrist_3_joint: missing", "'ur5e_wrist_3_joint'" });
+}
+
+TEST(BadConfig, NonPositiveGripperLimitNamesFileLineAndField)
+{
+  const std::string robotiq = "model: robotiq_2f_85\nacceleration_limits:\n  finger_joint: 0.0\n";
+  expectMentions(configErrorOf("robotiq_2f_85.yaml", robotiq),
+                 { "config/robotiq_2f_85.yaml:3: acceleration_limits.finger_joint: must be positive, got 0.0" });
+}
+
+TEST(BadConfig, UnreadableConfigIsNamed)
+{
+  try
+  {
+    vrrw_scene::loadAccelerationLimits("/nonexistent/ur5e.yaml", "ur5e_");
+    FAIL();
+  }
+  catch (const SceneError& e)
+  {
+    expectMentions(e.what(), { "/nonexistent/ur5e.yaml: cannot read the file" });
+  }
+}
+
 TEST(CustomScene, PrefixesEveryNameAndFindsTheChain)
 {
   const auto scene = loadScene(testFile("scenes/custom_robot.yaml"), testOptions());
@@ -121,6 +187,7 @@ TEST(CustomScene, PrefixesEveryNameAndFindsTheChain)
   EXPECT_NEAR(robot.base_pose.translation().y(), 0.5, 1e-12);
   EXPECT_NE(scene.urdf.find("name=\"left_base_joint\""), std::string::npos);
   EXPECT_EQ(scene.urdf.find("name=\"joint1\""), std::string::npos);
+  EXPECT_TRUE(robot.acceleration_limits.empty());  // no config for a robot of its own description
 }
 
 TEST(CustomScene, PrimitiveObjectsHaveBoxAndCylinderInertia)
@@ -182,4 +249,31 @@ TEST(ShippedScene, MultibotRobotsArePrefixedByTheirNames)
   }
   EXPECT_EQ(scene.robot("fetch")->arm_joints.size(), 7u);
   EXPECT_EQ(scene.robot("ur10e")->gripper, "robotiq_2f_140");
+}
+
+TEST(ShippedScene, AccelerationLimitsComeFromTheModelAndGripperConfigs)
+{
+  const auto scene = loadScene("pick_place_drill", testOptions());
+  const auto& limits = scene.robot("ur5e")->acceleration_limits;
+  EXPECT_EQ(limits.size(), 7u);  // six arm joints and the finger joint; its five mimic joints have none
+  EXPECT_DOUBLE_EQ(limits.at("ur5e_shoulder_pan_joint"), 3.14159265);  // urdf/config/ur5e.yaml
+  EXPECT_DOUBLE_EQ(limits.at("ur5e_wrist_3_joint"), 3.14159265);
+  EXPECT_DOUBLE_EQ(limits.at("ur5e_finger_joint"), 5.0);  // urdf/config/robotiq_2f_85.yaml
+}
+
+TEST(ShippedScene, EveryMovableJointOfEveryRobotHasAnAccelerationLimit)
+{
+  const auto scene = loadScene("paper_multibot", testOptions());
+  for (const auto& robot : scene.robots)
+  {
+    ASSERT_EQ(robot.acceleration_limits.size(), robot.initial_positions.size()) << robot.name;
+    for (const auto& joint : robot.initial_positions)
+      EXPECT_GT(robot.acceleration_limits.at(joint.first), 0.0) << joint.first;
+  }
+  const auto& fetch = scene.robot("fetch")->acceleration_limits;  // urdf/config/fetch.yaml
+  EXPECT_EQ(fetch.size(), 13u);
+  EXPECT_DOUBLE_EQ(fetch.at("fetch_torso_lift_joint"), 0.5);
+  EXPECT_DOUBLE_EQ(fetch.at("fetch_wrist_roll_joint"), 2.5);
+  EXPECT_DOUBLE_EQ(fetch.at("fetch_l_gripper_finger_joint"), 0.5);
+  EXPECT_DOUBLE_EQ(scene.robot("ur10e")->acceleration_limits.at("ur10e_finger_joint"), 5.0);
 }

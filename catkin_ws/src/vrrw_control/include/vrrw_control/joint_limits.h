@@ -1,11 +1,12 @@
 #pragma once
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace vrrw_control
 {
-/// \brief Limits of one joint: URDF position/velocity limits plus the YAML acceleration limit.
+/// \brief Limits of one joint: URDF position/velocity limits plus the acceleration limit of its robot config.
 struct JointLimits
 {
   std::string name;
@@ -16,10 +17,9 @@ struct JointLimits
   double max_acceleration = std::numeric_limits<double>::infinity();
 };
 
-/// \brief Limits of the named joints from a URDF; throws std::runtime_error naming a missing joint.
-std::vector<JointLimits> loadJointLimits(const std::string& urdf_xml, const std::vector<std::string>& joints);
-
-/// \brief Applies `acceleration_limits: {unprefixed_joint: value}` of urdf/config/<model>.yaml to joints
-/// named `prefix + key`; throws std::runtime_error naming the file and field on bad input.
-void loadAccelerationLimits(const std::string& yaml_path, const std::string& prefix, std::vector<JointLimits>& limits);
+/// \brief Limits of the named joints from a URDF, with max_acceleration from `acceleration_limits` (prefixed joint
+/// names, as vrrw_scene::Robot::acceleration_limits; a joint without one stays unlimited); throws
+/// std::runtime_error naming a missing joint.
+std::vector<JointLimits> loadJointLimits(const std::string& urdf_xml, const std::vector<std::string>& joints,
+                                         const std::map<std::string, double>& acceleration_limits = {});
 }  // namespace vrrw_control

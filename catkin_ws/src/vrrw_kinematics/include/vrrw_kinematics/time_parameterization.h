@@ -10,7 +10,7 @@ namespace vrrw_kinematics
 struct TimingOptions
 {
   std::vector<double> max_velocity;      ///< per joint (rad/s, m/s), from the URDF
-  std::vector<double> max_acceleration;  ///< per joint, from urdf/config/<model>.yaml
+  std::vector<double> max_acceleration;  ///< per joint, from the scene (armAccelerationLimits)
   double max_deviation = 0.02;  ///< how far (joint space) the blend at a waypoint may cut the corner; 0: stop there
   double sample_period = 0.01;  ///< s between trajectory points
   double path_step = 1e-3;      ///< arc-length grid of the phase-plane integration
@@ -34,9 +34,4 @@ public:
 private:
   TimingOptions options_;
 };
-
-/// \brief Acceleration limits of `joint_names` from a urdf/config/<model>.yaml file; joint names there are
-/// unprefixed, so `prefix` is stripped first. Throws KinematicsError(InvalidArgument) naming file and joint.
-std::vector<double> loadAccelerationLimits(const std::string& yaml_path, const std::vector<std::string>& joint_names,
-                                           const std::string& prefix);
 }  // namespace vrrw_kinematics

@@ -60,8 +60,7 @@ int main(int argc, char** argv)
       vrrw_kinematics::TimingOptions timing;
       for (const std::string& joint : robot.arm_joints)
         timing.max_velocity.push_back(world.model().joints()[world.model().jointIndex(joint)].max_velocity);
-      timing.max_acceleration =
-          vrrw_kinematics::loadAccelerationLimits(robot.config_file, robot.arm_joints, robot.name + "_");
+      timing.max_acceleration = vrrw_kinematics::armAccelerationLimits(robot);
       const vrrw_kinematics::TimeParameterization parameterization(timing);
       std::mt19937_64 rng(seed);
       Eigen::VectorXd home(static_cast<Eigen::Index>(robot.arm_joints.size()));
