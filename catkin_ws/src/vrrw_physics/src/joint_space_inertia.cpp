@@ -23,47 +23,70 @@ Eigen::Vector3d toEigen(const btVector3& v)
   return Eigen::Vector3d(v.x(), v.y(), v.z());
 }
 
-/// Inverse of a symmetric positive-definite matrix by Cholesky, M = L L', M^-1 = L^-T L^-1
-/// (plain loops: for a dozen joints they beat Eigen's blocked dynamic-size kernels).
+/// Inverse of a symmetric positive-definite matrix by Cholesky, M = L L', M^-1 = L^-T L^-1.
+/// Every entry is the same sequence of double operations as the textbook triple loops (each sum taken
+/// in ascending k), but the loops run column-wise over contiguous storage, so the independent sums of
+/// a column advance together (vectorizable) instead of one dependent chain after the other.
 JointMatrix invertSpd(const JointMatrix& m)
 {
-  const Eigen::Index n = m.rows();
-  JointMatrix l = JointMatrix::Zero(n, n);
-  for (Eigen::Index j = 0; j < n; ++j)
+  const int n = int(m.rows());
+  constexpr int S = kMaxJoints;
+  double l[S * S];      // column-major: l[i + k * S] = L(i, k), i >= k
+  double inv_l[S * S];  // column-major: inv_l[i + j * S] = L^-1(i, j), i >= j
+  double rows[S * S];   // row-major copy of L^-1: rows[k * S + j] = L^-1(k, j)
+  double acc[S];
+  for (int j = 0; j < n; ++j)
   {
-    double d = m(j, j);
-    for (Eigen::Index k = 0; k < j; ++k)
-      d -= l(j, k) * l(j, k);
-    l(j, j) = std::sqrt(d);
-    for (Eigen::Index i = j + 1; i < n; ++i)
+    double* column = l + j * S;
+    for (int i = j; i < n; ++i)
+      column[i] = m(i, j);
+    for (int k = 0; k < j; ++k)
     {
-      double s = m(i, j);
-      for (Eigen::Index k = 0; k < j; ++k)
-        s -= l(i, k) * l(j, k);
-      l(i, j) = s / l(j, j);
+      const double* lk = l + k * S;
+      const double ljk = lk[j];
+      for (int i = j; i < n; ++i)
+        column[i] -= lk[i] * ljk;
     }
+    column[j] = std::sqrt(column[j]);
+    for (int i = j + 1; i < n; ++i)
+      column[i] = column[i] / column[j];
   }
-  JointMatrix inv_l = JointMatrix::Zero(n, n);
-  for (Eigen::Index j = 0; j < n; ++j)
+  for (int j = 0; j < n; ++j)
   {
-    inv_l(j, j) = 1.0 / l(j, j);
-    for (Eigen::Index i = j + 1; i < n; ++i)
+    double* column = inv_l + j * S;
+    column[j] = 1.0 / l[j + j * S];
+    for (int i = j + 1; i < n; ++i)
+      column[i] = 0.0;
+    for (int k = j; k < n - 1; ++k)
     {
-      double s = 0.0;
-      for (Eigen::Index k = j; k < i; ++k)
-        s -= l(i, k) * inv_l(k, j);
-      inv_l(i, j) = s / l(i, i);
+      if (k > j)
+        column[k] = column[k] / l[k + k * S];
+      const double x = column[k];
+      const double* lk = l + k * S;
+      for (int i = k + 1; i < n; ++i)
+        column[i] -= lk[i] * x;
     }
+    if (n - 1 > j)
+      column[n - 1] = column[n - 1] / l[(n - 1) + (n - 1) * S];
   }
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j <= k; ++j)
+      rows[k * S + j] = inv_l[k + j * S];
   JointMatrix inverse(n, n);
-  for (Eigen::Index i = 0; i < n; ++i)
-    for (Eigen::Index j = 0; j <= i; ++j)
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j <= i; ++j)
+      acc[j] = 0.0;
+    for (int k = i; k < n; ++k)
     {
-      double s = 0.0;
-      for (Eigen::Index k = i; k < n; ++k)
-        s += inv_l(k, i) * inv_l(k, j);
-      inverse(i, j) = inverse(j, i) = s;
+      const double* row = rows + k * S;
+      const double a = row[i];
+      for (int j = 0; j <= i; ++j)
+        acc[j] += a * row[j];
     }
+    for (int j = 0; j <= i; ++j)
+      inverse(i, j) = inverse(j, i) = acc[j];
+  }
   return inverse;
 }
 }  // namespace

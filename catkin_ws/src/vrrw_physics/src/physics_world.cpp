@@ -1,3 +1,4 @@
+#include <vrrw_physics/joint_row_solver.h>
 #include <vrrw_physics/physics_world.h>
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
@@ -85,7 +86,10 @@ PhysicsWorld::PhysicsWorld(const vrrw_scene::Scene& scene, const WorldOptions& o
   collision_config_ = std::make_unique<btDefaultCollisionConfiguration>();
   dispatcher_ = std::make_unique<btCollisionDispatcher>(collision_config_.get());
   broadphase_ = std::make_unique<btDbvtBroadphase>();
-  solver_ = std::make_unique<btMultiBodyConstraintSolver>();
+  if (options_.sparse_joint_rows)
+    solver_ = std::make_unique<JointRowSolver>();
+  else
+    solver_ = std::make_unique<btMultiBodyConstraintSolver>();
   world_ = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                       collision_config_.get());
   const Eigen::Vector3d& g = options_.gravity;

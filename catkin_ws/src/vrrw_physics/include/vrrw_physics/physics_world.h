@@ -54,6 +54,8 @@ struct WorldOptions
                                      ///< while a robot link touches something (1 otherwise)
   double solver_residual = 1e-9;     ///< stop sweeping when the squared impulse change falls below
   bool gravity_compensation = true;  ///< feed-forward torques cancelling gravity on each robot
+  bool sparse_joint_rows = true;     ///< JointRowSolver (bit-identical to Bullet's solver, faster);
+                                     ///< false: Bullet's btMultiBodyConstraintSolver
   double link_friction = 1.0;
   double max_joint_speed = 50.0;     ///< guard: rad/s or m/s
   double max_object_speed = 20.0;    ///< guard: m/s

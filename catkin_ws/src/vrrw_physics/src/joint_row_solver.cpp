@@ -1,0 +1,205 @@
+#include <vrrw_physics/joint_row_solver.h>
+
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+
+namespace vrrw_physics
+{
+void JointRowSolver::indexRows()
+{
+  const int n = m_multiBodyNonContactConstraints.size();
+  rows_.resize(std::size_t(n));
+  for (int r = 0; r < n; ++r)
+  {
+    const btMultiBodySolverConstraint& c = m_multiBodyNonContactConstraints[r];
+    SparseRow& row = rows_[std::size_t(r)];
+    row.terms = -1;
+    // Only rows on one multibody and nothing else; the rest keep Bullet's generic path.
+    if (!c.m_multiBodyA || c.m_multiBodyB || c.m_solverBodyIdB >= 0)
+      continue;
+    const int size = c.m_multiBodyA->getNumDofs() + 6;
+    const btScalar* jacobian = &m_data.m_jacobians[c.m_jacAindex];
+    const btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[c.m_jacAindex];
+    int terms = 0;
+    for (int i = 0; i < size && terms <= kMaxTerms; ++i)
+      if (jacobian[i] != btScalar(0))
+      {
+        if (terms < kMaxTerms)
+          row.jacobian[terms] = i;
+        ++terms;
+      }
+    if (terms > kMaxTerms)
+      continue;
+    row.terms = terms;
+    int begin = 0, end = size;
+    while (begin < end && response[begin] == btScalar(0))
+      ++begin;
+    while (end > begin && response[end - 1] == btScalar(0))
+      --end;
+    row.response_begin = begin;
+    row.response_end = end;
+  }
+}
+
+btScalar JointRowSolver::resolveSparse(const btMultiBodySolverConstraint& c, const SparseRow& row)
+{
+  // Same operations, in the same order and precision, as resolveSingleConstraintRowGeneric for a row on
+  // one multibody; only exact-zero terms are left out.
+  const btScalar* jacobian = &m_data.m_jacobians[c.m_jacAindex];
+  const btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[c.m_jacAindex];
+  btScalar* delta_v = &m_data.m_deltaVelocities[c.m_deltaVelAindex];
+
+  btScalar delta_impulse = c.m_rhs - btScalar(c.m_appliedImpulse) * c.m_cfm;
+  btScalar rate = 0;
+  for (int k = 0; k < row.terms; ++k)
+    rate += jacobian[row.jacobian[k]] * delta_v[row.jacobian[k]];
+  const btScalar rate_b = 0;
+  delta_impulse -= rate * c.m_jacDiagABInv;
+  delta_impulse -= rate_b * c.m_jacDiagABInv;
+  const btScalar sum = btScalar(c.m_appliedImpulse) + delta_impulse;
+  if (sum < c.m_lowerLimit)
+  {
+    delta_impulse = c.m_lowerLimit - c.m_appliedImpulse;
+    c.m_appliedImpulse = c.m_lowerLimit;
+  }
+  else if (sum > c.m_upperLimit)
+  {
+    delta_impulse = c.m_upperLimit - c.m_appliedImpulse;
+    c.m_appliedImpulse = c.m_upperLimit;
+  }
+  else
+    c.m_appliedImpulse = sum;
+  // Bullet's solver also moves the body's own delta velocity in step (DIRECTLY_UPDATE_VELOCITY_DURING_
+  // SOLVER_ITERATIONS, applyDeltaVeeMultiDof2); that array has only a const accessor, the body is not const.
+  btScalar* body_delta_v = const_cast<btScalar*>(c.m_multiBodyA->getDeltaVelocityVector());
+  for (int i = row.response_begin; i < row.response_end; ++i)
+    delta_v[i] += response[i] * delta_impulse;
+  for (int i = row.response_begin; i < row.response_end; ++i)
+    body_delta_v[i] += response[i] * delta_impulse;
+  return delta_impulse / c.m_jacDiagABInv;
+}
+
+btScalar JointRowSolver::solveSingleIteration(int iteration, btCollisionObject** bodies, int numBodies,
+                                              btPersistentManifold** manifoldPtr, int numManifolds,
+                                              btTypedConstraint** constraints, int numConstraints,
+                                              const btContactSolverInfo& infoGlobal, btIDebugDraw* debugDrawer)
+{
+  // The sequence of btMultiBodyConstraintSolver::solveSingleIteration (Bullet 3.24): rigid-body rows,
+  // then the multibody joint rows (inner sweeps, alternating direction), then multibody contacts and
+  // friction; the squared residual is the largest of all.
+  btScalar residual = btSequentialImpulseConstraintSolver::solveSingleIteration(
+      iteration, bodies, numBodies, manifoldPtr, numManifolds, constraints, numConstraints, infoGlobal, debugDrawer);
+
+  if (iteration == 0 || rows_.size() != std::size_t(m_multiBodyNonContactConstraints.size()))
+    indexRows();
+  const int n = m_multiBodyNonContactConstraints.size();
+  btScalar joint_residual = 0;
+  for (int inner = 0; inner < infoGlobal.m_numNonContactInnerIterations; ++inner)
+  {
+    joint_residual = 0;
+    for (int j = 0; j < n; ++j)
+    {
+      const int r = (iteration & 1) ? j : n - 1 - j;
+      btMultiBodySolverConstraint& c = m_multiBodyNonContactConstraints[r];
+      const SparseRow& row = rows_[std::size_t(r)];
+      const btScalar change = row.terms >= 0 ? resolveSparse(c, row) : resolveSingleConstraintRowGeneric(c);
+      joint_residual = btMax(joint_residual, change * change);
+      if (c.m_multiBodyA)
+        c.m_multiBodyA->setPosUpdated(false);
+      if (c.m_multiBodyB)
+        c.m_multiBodyB->setPosUpdated(false);
+    }
+  }
+  residual = btMax(residual, joint_residual);
+
+  const auto touched = [](btMultiBodySolverConstraint& c) {
+    if (c.m_multiBodyA)
+      c.m_multiBodyA->setPosUpdated(false);
+    if (c.m_multiBodyB)
+      c.m_multiBodyB->setPosUpdated(false);
+  };
+  for (int j = 0; j < m_multiBodyNormalContactConstraints.size(); ++j)
+  {
+    btMultiBodySolverConstraint& c = m_multiBodyNormalContactConstraints[j];
+    btScalar change = 0;
+    if (iteration < infoGlobal.m_numIterations)
+      change = resolveSingleConstraintRowGeneric(c);
+    residual = btMax(residual, change * change);
+    touched(c);
+  }
+  if (iteration >= infoGlobal.m_numIterations)
+    return residual;
+  const auto normalImpulse = [this](const btMultiBodySolverConstraint& c) {
+    return btScalar(m_multiBodyNormalContactConstraints[c.m_frictionIndex].m_appliedImpulse);
+  };
+  if ((infoGlobal.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) &&
+      (infoGlobal.m_solverMode & SOLVER_DISABLE_IMPLICIT_CONE_FRICTION) == 0)
+  {
+    for (int j = 0; j < m_multiBodySpinningFrictionContactConstraints.size(); ++j)
+    {
+      btMultiBodySolverConstraint& c = m_multiBodySpinningFrictionContactConstraints[j];
+      const btScalar total = normalImpulse(c);
+      if (total > btScalar(0))
+      {
+        c.m_lowerLimit = -(c.m_friction * total);
+        c.m_upperLimit = c.m_friction * total;
+        const btScalar change = resolveSingleConstraintRowGeneric(c);
+        residual = btMax(residual, change * change);
+        touched(c);
+      }
+    }
+    for (int j = 0; j < m_multiBodyTorsionalFrictionContactConstraints.size(); ++j)
+    {
+      btMultiBodySolverConstraint& a = m_multiBodyTorsionalFrictionContactConstraints[j];
+      const btScalar total = normalImpulse(a);
+      ++j;
+      btMultiBodySolverConstraint& b = m_multiBodyTorsionalFrictionContactConstraints[j];
+      if (total > btScalar(0) && a.m_frictionIndex == b.m_frictionIndex)
+      {
+        a.m_lowerLimit = -(a.m_friction * total);
+        a.m_upperLimit = a.m_friction * total;
+        b.m_lowerLimit = -(b.m_friction * total);
+        b.m_upperLimit = b.m_friction * total;
+        const btScalar change = resolveConeFrictionConstraintRows(a, b);
+        residual = btMax(residual, change * change);
+        touched(a);
+        touched(b);
+      }
+    }
+    for (int j = 0; j < m_multiBodyFrictionContactConstraints.size(); ++j)
+    {
+      btMultiBodySolverConstraint& a = m_multiBodyFrictionContactConstraints[j];
+      const btScalar total = normalImpulse(a);
+      ++j;
+      btMultiBodySolverConstraint& b = m_multiBodyFrictionContactConstraints[j];
+      if (a.m_frictionIndex == b.m_frictionIndex)
+      {
+        a.m_lowerLimit = -(a.m_friction * total);
+        a.m_upperLimit = a.m_friction * total;
+        b.m_lowerLimit = -(b.m_friction * total);
+        b.m_upperLimit = b.m_friction * total;
+        const btScalar change = resolveConeFrictionConstraintRows(a, b);
+        residual = btMax(residual, change * change);
+        touched(b);
+        touched(a);
+      }
+    }
+  }
+  else
+  {
+    for (int j = 0; j < m_multiBodyFrictionContactConstraints.size(); ++j)
+    {
+      btMultiBodySolverConstraint& c = m_multiBodyFrictionContactConstraints[j];
+      const btScalar total = normalImpulse(c);
+      if (total > btScalar(0))
+      {
+        c.m_lowerLimit = -(c.m_friction * total);
+        c.m_upperLimit = c.m_friction * total;
+        const btScalar change = resolveSingleConstraintRowGeneric(c);
+        residual = btMax(residual, change * change);
+        touched(c);
+      }
+    }
+  }
+  return residual;
+}
+}  // namespace vrrw_physics
