@@ -536,8 +536,8 @@ void ArticulatedRobot::clearFeedForward()
 std::vector<double> ArticulatedRobot::gravityTorques(const Eigen::Vector3d& gravity) const
 {
   const int n = body_->getNumLinks();
-  std::vector<double> mass(std::size_t(n), 0.0);
-  std::vector<Eigen::Vector3d> moment(static_cast<std::size_t>(n));
+  double mass[kMaxJoints];  // one Bullet link per movable joint: at most kMaxJoints
+  Eigen::Vector3d moment[kMaxJoints];
   for (int k = 0; k < n; ++k)
   {
     mass[std::size_t(k)] = body_->getLinkMass(k);

@@ -19,16 +19,19 @@ void JointRowSolver::indexRows()
     const int size = c.m_multiBodyA->getNumDofs() + 6;
     const btScalar* jacobian = &m_data.m_jacobians[c.m_jacAindex];
     const btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[c.m_jacAindex];
+    // Branch-free scan (the nonzero positions differ from row to row): an index is written to the next
+    // slot and kept only if its entry is nonzero.
+    int found[kMaxTerms + 1];
     int terms = 0;
     for (int i = 0; i < size && terms <= kMaxTerms; ++i)
-      if (jacobian[i] != btScalar(0))
-      {
-        if (terms < kMaxTerms)
-          row.jacobian[terms] = i;
-        ++terms;
-      }
+    {
+      found[terms] = i;
+      terms += jacobian[i] != btScalar(0);
+    }
     if (terms > kMaxTerms)
       continue;
+    for (int k = 0; k < terms; ++k)
+      row.jacobian[k] = found[k];
     row.terms = terms;
     int begin = 0, end = size;
     while (begin < end && response[begin] == btScalar(0))

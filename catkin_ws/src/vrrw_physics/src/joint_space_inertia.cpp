@@ -4,6 +4,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodySolverConstraint.h>
+#include <algorithm>
 #include <cmath>
 #include <Eigen/Geometry>
 
@@ -25,15 +26,15 @@ Eigen::Vector3d toEigen(const btVector3& v)
 
 /// Inverse of a symmetric positive-definite matrix by Cholesky, M = L L', M^-1 = L^-T L^-1.
 /// Every entry is the same sequence of double operations as the textbook triple loops (each sum taken
-/// in ascending k), but the loops run column-wise over contiguous storage, so the independent sums of
-/// a column advance together (vectorizable) instead of one dependent chain after the other.
+/// in ascending k, the same products and divisions), but the loops are ordered so that independent
+/// sums advance together over contiguous storage: the divisions of a row of L^-1 pipeline instead of
+/// waiting on each other, and the inner loops vectorize.
 JointMatrix invertSpd(const JointMatrix& m)
 {
   const int n = int(m.rows());
   constexpr int S = kMaxJoints;
-  double l[S * S];      // column-major: l[i + k * S] = L(i, k), i >= k
-  double inv_l[S * S];  // column-major: inv_l[i + j * S] = L^-1(i, j), i >= j
-  double rows[S * S];   // row-major copy of L^-1: rows[k * S + j] = L^-1(k, j)
+  double l[S * S];    // column-major: l[i + k * S] = L(i, k), i >= k
+  double inv[S * S];  // row-major: inv[i * S + j] = L^-1(i, j), j <= i (partial sums until row i is done)
   double acc[S];
   for (int j = 0; j < n; ++j)
   {
@@ -51,27 +52,25 @@ JointMatrix invertSpd(const JointMatrix& m)
     for (int i = j + 1; i < n; ++i)
       column[i] = column[i] / column[j];
   }
-  for (int j = 0; j < n; ++j)
-  {
-    double* column = inv_l + j * S;
-    column[j] = 1.0 / l[j + j * S];
-    for (int i = j + 1; i < n; ++i)
-      column[i] = 0.0;
-    for (int k = j; k < n - 1; ++k)
-    {
-      if (k > j)
-        column[k] = column[k] / l[k + k * S];
-      const double x = column[k];
-      const double* lk = l + k * S;
-      for (int i = k + 1; i < n; ++i)
-        column[i] -= lk[i] * x;
-    }
-    if (n - 1 > j)
-      column[n - 1] = column[n - 1] / l[(n - 1) + (n - 1) * S];
-  }
+  // Forward substitution row by row: L^-1(i, j) = (0 - sum_{k=j}^{i-1} L(i, k) L^-1(k, j)) / L(i, i).
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < i; ++j)
+      inv[i * S + j] = 0.0;
   for (int k = 0; k < n; ++k)
-    for (int j = 0; j <= k; ++j)
-      rows[k * S + j] = inv_l[k + j * S];
+  {
+    double* row = inv + k * S;
+    const double diagonal = l[k + k * S];
+    for (int j = 0; j < k; ++j)
+      row[j] = row[j] / diagonal;
+    row[k] = 1.0 / diagonal;
+    for (int i = k + 1; i < n; ++i)
+    {
+      double* target = inv + i * S;
+      const double lik = l[i + k * S];
+      for (int j = 0; j <= k; ++j)
+        target[j] -= lik * row[j];
+    }
+  }
   JointMatrix inverse(n, n);
   for (int i = 0; i < n; ++i)
   {
@@ -79,7 +78,7 @@ JointMatrix invertSpd(const JointMatrix& m)
       acc[j] = 0.0;
     for (int k = i; k < n; ++k)
     {
-      const double* row = rows + k * S;
+      const double* row = inv + k * S;
       const double a = row[i];
       for (int j = 0; j <= i; ++j)
         acc[j] += a * row[j];
@@ -96,16 +95,18 @@ JointMatrix jointSpaceInertia(const ArticulatedRobot& robot)
   // Spatial inertias about the world origin, kept as mass m, first moment h = m c and rotational
   // inertia about the origin I_O = I_c - m [c]x^2; a motion (w, v_O) meets the momentum
   // (I_O w + h x v_O, m v_O - h x w).
+  // Every field is assigned in the first loop: no initializers, and fixed storage (one link per
+  // movable joint, at most kMaxJoints), so a step allocates nothing here.
   struct Composite
   {
-    double mass = 0.0;
-    Eigen::Vector3d moment = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d rotational = Eigen::Matrix3d::Zero();
+    double mass;
+    Eigen::Vector3d moment;
+    Eigen::Matrix3d rotational;
   };
   const btMultiBody& body = *robot.body();
   const std::size_t n_links = static_cast<std::size_t>(body.getNumLinks());
-  std::vector<Composite> composite(n_links);
-  std::vector<Eigen::Vector3d> angular(n_links), linear(n_links);
+  Composite composite[kMaxJoints];
+  Eigen::Vector3d angular[kMaxJoints], linear[kMaxJoints];
   for (std::size_t k = 0; k < n_links; ++k)
   {
     const int link = int(k);
@@ -140,7 +141,8 @@ JointMatrix jointSpaceInertia(const ArticulatedRobot& robot)
     p.rotational += composite[k].rotational;
   }
   const auto& joints = robot.joints();
-  std::vector<int> joint_of_link(n_links, -1);
+  int joint_of_link[kMaxJoints];
+  std::fill(joint_of_link, joint_of_link + n_links, -1);
   for (std::size_t j = 0; j < joints.size(); ++j)
     joint_of_link[std::size_t(joints[j].link)] = int(j);
   const Eigen::Index n = Eigen::Index(joints.size());
@@ -204,10 +206,9 @@ double fillJointRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& d
   row.m_jacAindex = data.m_jacobians.size();
   data.m_jacobians.resize(data.m_jacobians.size() + size);
   data.m_deltaVelocitiesUnitImpulse.resize(data.m_deltaVelocitiesUnitImpulse.size() + size);
+  // resize() fills the new entries with zeros: only the joint coordinates are written below.
   btScalar* jacobian = &data.m_jacobians[row.m_jacAindex];
   btScalar* delta = &data.m_deltaVelocitiesUnitImpulse[row.m_jacAindex];
-  for (int i = 0; i < size; ++i)
-    jacobian[i] = delta[i] = 0;
   const int dof_a = body->getLink(link_a).m_dofOffset;
   const int dof_b = link_b >= 0 ? body->getLink(link_b).m_dofOffset : -1;
   jacobian[6 + dof_a] = btScalar(coeff_a);
@@ -216,7 +217,11 @@ double fillJointRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& d
   const int ja = response.joint_of_dof[std::size_t(dof_a)];
   const int jb = dof_b >= 0 ? response.joint_of_dof[std::size_t(dof_b)] : -1;
   const JointMatrix& inverse = response.inverse();
+  // denominator = J M^-1 J' summed over the dofs in ascending order; the Jacobian is zero but at
+  // dof_a and dof_b, and adding the zero terms changes no finite sum, so only those two are added.
   double denominator = 0.0;
+  const int first = dof_b >= 0 && dof_b < dof_a ? dof_b : dof_a;
+  const int second = dof_b >= 0 ? (dof_b < dof_a ? dof_a : dof_b) : -1;
   for (int d = 0; d < size - 6; ++d)
   {
     const int j = response.joint_of_dof[std::size_t(d)];
@@ -224,7 +229,8 @@ double fillJointRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& d
     if (jb >= 0)
       value += coeff_b * inverse(j, jb);
     delta[6 + d] = btScalar(value);
-    denominator += double(jacobian[6 + d]) * value;
+    if (d == first || d == second)
+      denominator += double(jacobian[6 + d]) * value;
   }
   const btScalar* velocity = body->getVelocityVector();
   double rate = coeff_a * velocity[6 + dof_a];
