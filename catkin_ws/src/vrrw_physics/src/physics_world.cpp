@@ -1,5 +1,6 @@
 #include <vrrw_physics/joint_row_solver.h>
 #include <vrrw_physics/physics_world.h>
+#include <vrrw_physics/self_collision_filter.h>
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
@@ -86,6 +87,8 @@ PhysicsWorld::PhysicsWorld(const vrrw_scene::Scene& scene, const WorldOptions& o
   collision_config_ = std::make_unique<btDefaultCollisionConfiguration>();
   dispatcher_ = std::make_unique<btCollisionDispatcher>(collision_config_.get());
   broadphase_ = std::make_unique<btDbvtBroadphase>();
+  self_collision_filter_ = std::make_unique<SelfCollisionFilter>();
+  broadphase_->getOverlappingPairCache()->setOverlapFilterCallback(self_collision_filter_.get());
   if (options_.sparse_joint_rows)
     solver_ = std::make_unique<JointRowSolver>();
   else

@@ -16,6 +16,7 @@
 #include <vrrw_scene/scene.h>
 
 class btBroadphaseInterface;
+struct btOverlapFilterCallback;
 class btCollisionDispatcher;
 class btDefaultCollisionConfiguration;
 class btMultiBodyConstraintSolver;
@@ -183,6 +184,7 @@ private:
   WorldOptions options_;
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config_;
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
+  std::unique_ptr<btOverlapFilterCallback> self_collision_filter_;
   std::unique_ptr<btBroadphaseInterface> broadphase_;
   std::unique_ptr<btMultiBodyConstraintSolver> solver_;
   std::unique_ptr<btMultiBodyDynamicsWorld> world_;
