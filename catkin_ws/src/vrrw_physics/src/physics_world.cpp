@@ -238,34 +238,47 @@ bool PhysicsWorld::robotInContact() const
 
 bool PhysicsWorld::stateIsSane()
 {
-  std::ostringstream why;
+  // Checked every step: no allocation or stream unless something is wrong.
+  std::string why;
+  bool bad = false;
   for (const RobotEntry& e : robots_)
   {
-    const auto q = e.robot->positions();
-    const auto v = e.robot->velocities();
-    for (std::size_t j = 0; j < q.size(); ++j)
-      if (!std::isfinite(q[j]) || !std::isfinite(v[j]) || std::abs(v[j]) > options_.max_joint_speed)
+    const btMultiBody& body = *e.robot->body();
+    const auto& joints = e.robot->joints();
+    for (std::size_t j = 0; j < joints.size(); ++j)
+    {
+      const double q = body.getJointPos(joints[j].link);
+      const double v = body.getJointVel(joints[j].link);
+      if (!std::isfinite(q) || !std::isfinite(v) || std::abs(v) > options_.max_joint_speed)
       {
-        why << "joint " << e.robot->joints()[j].name << ": velocity " << v[j] << " (limit " << options_.max_joint_speed
-            << ")";
+        std::ostringstream text;
+        text << "joint " << joints[j].name << ": velocity " << v << " (limit " << options_.max_joint_speed << ")";
+        why = text.str();
+        bad = true;
         break;
       }
-    if (!why.str().empty())
+    }
+    if (bad)
       break;
   }
   for (const auto& o : objects_)
   {
-    if (!why.str().empty())
+    if (bad)
       break;
     const Eigen::Vector3d p = o->pose().translation();
     const double speed = o->linearVelocity().norm();
     if (!p.allFinite() || !std::isfinite(speed) || speed > options_.max_object_speed)
-      why << "object " << o->name() << ": speed " << speed << " m/s (limit " << options_.max_object_speed << ")";
+    {
+      std::ostringstream text;
+      text << "object " << o->name() << ": speed " << speed << " m/s (limit " << options_.max_object_speed << ")";
+      why = text.str();
+      bad = true;
+    }
   }
-  if (why.str().empty())
+  if (!bad)
     return true;
   std::ostringstream message;
-  message << "physics guard at t=" << time_ << " s: " << why.str() << "; step rejected, state restored to t="
+  message << "physics guard at t=" << time_ << " s: " << why << "; step rejected, state restored to t="
           << last_good_.time << " s";
   last_error_ = message.str();
   return false;
