@@ -5,6 +5,7 @@
 #include <optional>
 #include <random>
 #include <tf2_eigen/tf2_eigen.h>
+#include <vrrw_trajectory/msg_conversions.h>
 
 #include "vrrw_kinematics/motion_planner.h"
 #include "vrrw_kinematics/scene_state.h"
@@ -246,16 +247,7 @@ bool RobotServices::plan(vrrw_msgs::Plan::Request& req, vrrw_msgs::Plan::Respons
     vrrw_trajectory::JointTrajectory trajectory = timing_->compute(result.path, robot_.arm_joints);
     if (!planner.trajectoryValid(trajectory))
       trajectory = timing_exact_->compute(result.path, robot_.arm_joints);
-    res.trajectory.joint_names = trajectory.joint_names;
-    for (const auto& point : trajectory.points)
-    {
-      trajectory_msgs::JointTrajectoryPoint msg;
-      msg.positions = point.positions;
-      msg.velocities = point.velocities;
-      msg.accelerations = point.accelerations;
-      msg.time_from_start = ros::Duration(point.time);
-      res.trajectory.points.push_back(msg);
-    }
+    res.trajectory = vrrw_trajectory::toMsg(trajectory);
     res.error_code = 0;
     res.message = "planned in " + std::to_string(result.planning_time * 1e3) + " ms, " +
                   std::to_string(trajectory.duration()) + " s of motion";
