@@ -232,7 +232,9 @@ Robot makeRobot(const urdf::ModelInterface& model, const RobotSpec& spec, const 
   if (model_entry != catalog.robots.end())
     setInitial(model, prefix, model_entry->second.initial, spec.field + "(catalogue)", robot);
   setInitial(model, prefix, spec.initial, spec.field, robot);
-  if (model_entry != catalog.robots.end())
+  if (!spec.config.empty())
+    robot.config_file = spec.config;
+  if (!robot.config_file.empty())
   {
     const auto gripper = catalog.grippers.find(spec.gripper);
     const bool has_config = gripper != catalog.grippers.end() && !gripper->second.config.empty();

@@ -45,7 +45,7 @@ std::string resolveFile(const YamlField& field, const std::string& scene_file)
 
 RobotSpec parseRobot(const YamlField& entry, const Catalog& catalog, const std::string& scene_file)
 {
-  entry.allowKeys({ "name", "model", "gripper", "description", "tip_link", "base", "initial" });
+  entry.allowKeys({ "name", "model", "gripper", "description", "tip_link", "config", "base", "initial" });
   RobotSpec robot;
   robot.field = fieldName(entry);
   robot.name = entry["name"].asString();
@@ -71,6 +71,8 @@ RobotSpec parseRobot(const YamlField& entry, const Catalog& catalog, const std::
     if (robot.gripper.empty())
       robot.gripper = model->second.builtin_gripper;
   }
+  if (entry.has("config"))
+    robot.config = resolveFile(entry["config"], scene_file);
   if (entry.has("base"))
     robot.base = entry["base"].asPose();
   if (entry.has("initial"))

@@ -16,6 +16,7 @@ struct RobotSpec
   std::string name, model, gripper;
   std::string description;  ///< a custom URDF or xacro file, in place of a catalogue model
   std::string tip_link;     ///< custom robots: end of the arm chain
+  std::string config;       ///< acceleration limits and gains, in place of the catalogue's
   Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
   std::map<std::string, double> initial;  ///< unprefixed joint names
   std::string field;                      ///< "file:line: robots[i]" for later errors

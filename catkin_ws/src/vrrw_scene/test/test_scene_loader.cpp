@@ -184,10 +184,11 @@ TEST(CustomScene, PrefixesEveryNameAndFindsTheChain)
   EXPECT_EQ(robot.arm_joints, (std::vector<std::string>{ "left_joint1", "left_joint2" }));
   EXPECT_DOUBLE_EQ(robot.initial_positions.at("left_joint2"), 0.1);
   EXPECT_DOUBLE_EQ(robot.initial_positions.at("left_joint1"), 0.0);
+  EXPECT_DOUBLE_EQ(robot.acceleration_limits.at("left_joint1"), 4.0);  // from its own config
+  EXPECT_DOUBLE_EQ(robot.acceleration_limits.at("left_joint2"), 1.5);
   EXPECT_NEAR(robot.base_pose.translation().y(), 0.5, 1e-12);
   EXPECT_NE(scene.urdf.find("name=\"left_base_joint\""), std::string::npos);
   EXPECT_EQ(scene.urdf.find("name=\"joint1\""), std::string::npos);
-  EXPECT_TRUE(robot.acceleration_limits.empty());  // no config for a robot of its own description
 }
 
 TEST(CustomScene, PrimitiveObjectsHaveBoxAndCylinderInertia)
