@@ -1,4 +1,5 @@
 #include <vrrw_physics/joint_row_solver.h>
+#include <vrrw_physics/multibody_world.h>
 #include <vrrw_physics/physics_world.h>
 #include <vrrw_physics/self_collision_filter.h>
 
@@ -87,14 +88,20 @@ PhysicsWorld::PhysicsWorld(const vrrw_scene::Scene& scene, const WorldOptions& o
   collision_config_ = std::make_unique<btDefaultCollisionConfiguration>();
   dispatcher_ = std::make_unique<btCollisionDispatcher>(collision_config_.get());
   broadphase_ = std::make_unique<btDbvtBroadphase>();
-  self_collision_filter_ = std::make_unique<SelfCollisionFilter>();
-  broadphase_->getOverlappingPairCache()->setOverlapFilterCallback(self_collision_filter_.get());
-  if (options_.sparse_joint_rows)
-    solver_ = std::make_unique<JointRowSolver>();
-  else
+  if (options_.bullet_reference)
+  {
     solver_ = std::make_unique<btMultiBodyConstraintSolver>();
-  world_ = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
-                                                      collision_config_.get());
+    world_ = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+                                                        collision_config_.get());
+  }
+  else
+  {
+    self_collision_filter_ = std::make_unique<SelfCollisionFilter>();
+    broadphase_->getOverlappingPairCache()->setOverlapFilterCallback(self_collision_filter_.get());
+    solver_ = std::make_unique<JointRowSolver>();
+    world_ = std::make_unique<MultiBodyWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+                                              collision_config_.get());
+  }
   const Eigen::Vector3d& g = options_.gravity;
   world_->setGravity(btVector3(btScalar(g.x()), btScalar(g.y()), btScalar(g.z())));
   world_->getSolverInfo().m_numIterations = options_.solver_iterations;

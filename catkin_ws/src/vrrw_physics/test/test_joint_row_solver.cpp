@@ -1,4 +1,6 @@
 #include <vrrw_physics/joint_row_solver.h>
+#include <vrrw_physics/multibody_world.h>
+#include <vrrw_physics/self_collision_filter.h>
 #include <vrrw_physics/physics_world.h>
 #include <vrrw_scene/scene_loader.h>
 
@@ -22,12 +24,12 @@ struct Trajectory
 
 /// paper_multibot for 1.5 s: three arms track moving targets, the UR5e is compliant and a kinematic
 /// sphere sweeps through its wrist (contacts on a robot link, so the inner joint sweeps run too).
-Trajectory simulate(bool sparse)
+Trajectory simulate(bool reference)
 {
   vrrw_scene::LoadOptions load;
   load.root = VRRW_TEST_ROOT;
   WorldOptions options;
-  options.sparse_joint_rows = sparse;
+  options.bullet_reference = reference;
   PhysicsWorld world(vrrw_scene::loadScene("paper_multibot", load), options);
   world.setMode("ur5e", DriveMode::Compliant);
   const Eigen::Vector3d wrist = world.framePose("ur5e_wrist_1_link").translation();
@@ -70,10 +72,10 @@ Trajectory simulate(bool sparse)
 }
 }  // namespace
 
-TEST(JointRowSolver, BitIdenticalToBulletsSolverWithDrivesCouplingsLimitsAndContacts)
+TEST(JointRowSolver, DefaultWorldIsBitIdenticalToStockBulletWithDrivesCouplingsLimitsAndContacts)
 {
-  const Trajectory bullet = simulate(false);
-  const Trajectory sparse = simulate(true);
+  const Trajectory bullet = simulate(true);
+  const Trajectory sparse = simulate(false);
   std::cout << "hand moved the compliant UR5e wrist " << bullet.pushed << " m; " << bullet.values.size()
             << " values compared\n";
   EXPECT_GT(bullet.pushed, 0.01);  // the sweep did touch the robot

@@ -55,8 +55,10 @@ struct WorldOptions
                                      ///< while a robot link touches something (1 otherwise)
   double solver_residual = 1e-9;     ///< stop sweeping when the squared impulse change falls below
   bool gravity_compensation = true;  ///< feed-forward torques cancelling gravity on each robot
-  bool sparse_joint_rows = true;     ///< JointRowSolver (bit-identical to Bullet's solver, faster);
-                                     ///< false: Bullet's btMultiBodyConstraintSolver
+  bool bullet_reference = false;     ///< true: stock Bullet (btMultiBodyDynamicsWorld and
+                                     ///< btMultiBodyConstraintSolver, no broadphase filter), the reference
+                                     ///< the default's MultiBodyWorld, JointRowSolver and SelfCollisionFilter
+                                     ///< are tested against bit for bit (test_joint_row_solver)
   double link_friction = 1.0;
   double max_joint_speed = 50.0;     ///< guard: rad/s or m/s
   double max_object_speed = 20.0;    ///< guard: m/s
