@@ -2,8 +2,32 @@
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 
+#include <cstdint>
+#include <cstring>
+
 namespace vrrw_physics
 {
+namespace
+{
+/// x == 0 (+0 or -0) by its bits: an integer test, no floating-point compare.
+bool isZero(btScalar x)
+{
+  static_assert(sizeof(btScalar) == 4 || sizeof(btScalar) == 8, "btScalar is float or double");
+  if constexpr (sizeof(btScalar) == 4)
+  {
+    std::uint32_t bits;
+    std::memcpy(&bits, &x, sizeof(bits));
+    return (bits & 0x7fffffffu) == 0;
+  }
+  else
+  {
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof(bits));
+    return (bits & 0x7fffffffffffffffull) == 0;
+  }
+}
+}  // namespace
+
 void JointRowSolver::indexRows()
 {
   const int n = m_multiBodyNonContactConstraints.size();
@@ -19,24 +43,27 @@ void JointRowSolver::indexRows()
     const int size = c.m_multiBodyA->getNumDofs() + 6;
     const btScalar* jacobian = &m_data.m_jacobians[c.m_jacAindex];
     const btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[c.m_jacAindex];
-    // Branch-free scan (the nonzero positions differ from row to row): an index is written to the next
-    // slot and kept only if its entry is nonzero.
-    int found[kMaxTerms + 1];
+    // Branch-free scan (the nonzero positions differ from row to row): a bit per nonzero entry, then
+    // the set bits in ascending order.
+    std::uint64_t nonzero = 0;
+    for (int i = 0; i < size && i < 64; ++i)
+      nonzero |= std::uint64_t(!isZero(jacobian[i])) << i;
     int terms = 0;
-    for (int i = 0; i < size && terms <= kMaxTerms; ++i)
+    for (int i = 64; i < size; ++i)
+      terms += isZero(jacobian[i]) ? 0 : kMaxTerms + 1;  // beyond 64 dofs: generic path
+    for (; nonzero != 0 && terms <= kMaxTerms; nonzero &= nonzero - 1)
     {
-      found[terms] = i;
-      terms += jacobian[i] != btScalar(0);
+      if (terms < kMaxTerms)
+        row.jacobian[terms] = __builtin_ctzll(nonzero);
+      ++terms;
     }
     if (terms > kMaxTerms)
       continue;
-    for (int k = 0; k < terms; ++k)
-      row.jacobian[k] = found[k];
     row.terms = terms;
     int begin = 0, end = size;
-    while (begin < end && response[begin] == btScalar(0))
+    while (begin < end && isZero(response[begin]))
       ++begin;
-    while (end > begin && response[end - 1] == btScalar(0))
+    while (end > begin && isZero(response[end - 1]))
       --end;
     row.response_begin = begin;
     row.response_end = end;
@@ -75,9 +102,11 @@ btScalar JointRowSolver::resolveSparse(const btMultiBodySolverConstraint& c, con
   // SOLVER_ITERATIONS, applyDeltaVeeMultiDof2); that array has only a const accessor, the body is not const.
   btScalar* body_delta_v = const_cast<btScalar*>(c.m_multiBodyA->getDeltaVelocityVector());
   for (int i = row.response_begin; i < row.response_end; ++i)
-    delta_v[i] += response[i] * delta_impulse;
-  for (int i = row.response_begin; i < row.response_end; ++i)
-    body_delta_v[i] += response[i] * delta_impulse;
+  {
+    const btScalar change = response[i] * delta_impulse;  // the same product Bullet forms twice
+    delta_v[i] += change;
+    body_delta_v[i] += change;
+  }
   return delta_impulse / c.m_jacDiagABInv;
 }
 
