@@ -185,6 +185,100 @@ const JointMatrix& JointSpaceResponse::inverse() const
   return inverse_;
 }
 
+bool supportsJointSpaceAccelerations(const btMultiBody& body, const JointSpaceResponse& response)
+{
+  const int n_links = body.getNumLinks();
+  if (!response.valid() || !body.hasFixedBase() || body.isUsingGlobalVelocities() || body.isUsingRK4Integration() ||
+      n_links > kMaxJoints || body.getNumDofs() != n_links || int(response.joint_of_dof.size()) != n_links)
+    return false;
+  for (int i = 0; i < n_links; ++i)
+  {
+    const btMultibodyLink& link = body.getLink(i);
+    const int joint = response.joint_of_dof[std::size_t(i)];
+    if (link.m_dofCount != 1 || link.m_jointFeedback != nullptr || joint < 0 || joint >= n_links ||
+        (link.m_jointType != btMultibodyLink::eRevolute && link.m_jointType != btMultibodyLink::ePrismatic))
+      return false;
+  }
+  return true;
+}
+
+void jointSpaceAccelerations(const btMultiBody& body, const JointSpaceResponse& response, double* qdd)
+{
+  // The terms are Bullet's, in Bullet's link frames (origin at the centre of mass, principal axes):
+  // velocities v_i, the velocity-product acceleration c_i = v_i x (S_i qd_i) and the zero-acceleration force
+  // z_i (minus the applied force and torque, damping, gyroscopic term). With qdd = 0 the accelerations are
+  // a_i = X_i a_parent + c_i and the link forces f_i = I_i a_i + z_i, summed to the root: tau - S_i . f_i is
+  // what is left for M qdd.
+  const int n = body.getNumLinks();
+  const btScalar k_linear = body.getLinearDamping();
+  const btScalar k_angular = body.getAngularDamping();
+  const bool gyro = body.getUseGyroTerm();
+  const btScalar* velocity = body.getVelocityVector();
+  btMatrix3x3 rot_from_world[kMaxJoints + 1];
+  btSpatialMotionVector spat_vel[kMaxJoints + 1], spat_acc[kMaxJoints + 1];
+  btSpatialForceVector force[kMaxJoints + 1];
+  double bias[kMaxJoints];
+  rot_from_world[0] = btMatrix3x3(body.getWorldToBaseRot());
+  spat_vel[0].setVector(rot_from_world[0] * body.getBaseOmega(), rot_from_world[0] * body.getBaseVel());
+  spat_acc[0].setZero();
+  force[0].setZero();
+  btSpatialTransformationMatrix from_parent;
+  for (int i = 0; i < n; ++i)
+  {
+    const btMultibodyLink& link = body.getLink(i);
+    const int parent = link.m_parent;
+    const btMatrix3x3 rot_from_parent(link.m_cachedRotParentToThis);
+    rot_from_world[i + 1] = rot_from_parent * rot_from_world[parent + 1];
+    from_parent.m_rotMat = rot_from_parent;
+    from_parent.m_trnVec = link.m_cachedRVector;
+    btSpatialMotionVector& v = spat_vel[i + 1];
+    from_parent.transform(spat_vel[parent + 1], v);
+    const btSpatialMotionVector joint_vel = link.m_axes[0] * velocity[6 + link.m_dofOffset];
+    v += joint_vel;
+    btSpatialMotionVector coriolis;
+    v.cross(joint_vel, coriolis);
+    btSpatialForceVector& f = force[i + 1];
+    f.setVector(-(rot_from_world[i + 1] * body.getLinkTorque(i)), -(rot_from_world[i + 1] * body.getLinkForce(i)));
+    f.addVector(link.m_inertiaLocal * v.getAngular() * (k_angular + k_angular * v.getAngular().safeNorm()),
+                link.m_mass * v.getLinear() * (k_linear + k_linear * v.getLinear().safeNorm()));
+    if (gyro)
+      f.addAngular(v.getAngular().cross(link.m_inertiaLocal * v.getAngular()));
+    f.addLinear(link.m_mass * v.getAngular().cross(v.getLinear()));
+    btSpatialMotionVector& a = spat_acc[i + 1];
+    from_parent.transform(spat_acc[parent + 1], a);
+    a += coriolis;
+    // I_i a_i with I_i = diag(inertia) about the centre of mass, m on the linear part.
+    f.addVector(link.m_inertiaLocal * a.getAngular(), link.m_mass * a.getLinear());
+  }
+  for (int i = n; i-- > 0;)
+  {
+    const btMultibodyLink& link = body.getLink(i);
+    bias[link.m_dofOffset] = link.m_axes[0].dot(force[i + 1]);
+    if (link.m_parent < 0)
+      continue;
+    from_parent.m_rotMat = btMatrix3x3(link.m_cachedRotParentToThis);
+    from_parent.m_trnVec = link.m_cachedRVector;
+    from_parent.transformInverse(force[i + 1], force[link.m_parent + 1], btSpatialTransformationMatrix::Add);
+  }
+  double rhs[kMaxJoints];
+  for (int i = 0; i < n; ++i)
+  {
+    const int d = body.getLink(i).m_dofOffset;
+    rhs[response.joint_of_dof[std::size_t(d)]] = double(body.getJointTorque(i)) - bias[d];
+  }
+  const JointMatrix& inverse = response.inverse();
+  for (int k = 0; k < 6; ++k)
+    qdd[k] = 0.0;
+  for (int d = 0; d < n; ++d)
+  {
+    const int j = response.joint_of_dof[std::size_t(d)];
+    double sum = 0.0;
+    for (int e = 0; e < n; ++e)
+      sum += inverse(j, e) * rhs[e];
+    qdd[6 + d] = sum;
+  }
+}
+
 double fillJointRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& data, btMultiBody* body,
                     const JointSpaceResponse& response, int link_a, double coeff_a, int link_b, double coeff_b,
                     double goal_velocity, double cfm, double lower, double upper)

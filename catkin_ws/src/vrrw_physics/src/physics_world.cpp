@@ -149,6 +149,8 @@ PhysicsWorld::PhysicsWorld(const vrrw_scene::Scene& scene, const WorldOptions& o
           e.robot->drives()[std::size_t(joints[j].drive)]->setTarget(q[j], 0.0);
       const bool constraints = options_.drive_scheme == DriveScheme::Constraint;
       e.robot->addToWorld(world_.get(), constraints);
+      if (!options_.bullet_reference && options_.joint_space_dynamics)
+        static_cast<MultiBodyWorld*>(world_.get())->setJointSpaceDynamics(e.robot->body(), &e.robot->response());
       if (!constraints)
         e.stable_pd = std::make_unique<StablePd>(*e.robot);
       applyMode(e);

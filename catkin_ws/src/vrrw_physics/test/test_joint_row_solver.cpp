@@ -30,6 +30,10 @@ Trajectory simulate(bool reference)
   load.root = VRRW_TEST_ROOT;
   WorldOptions options;
   options.bullet_reference = reference;
+  // This compares the bit-identical speed-ups (JointRowSolver, SelfCollisionFilter, MultiBodyWorld's skipped
+  // prediction) with stock Bullet; the joint-space forward dynamics changes rounding and is compared with
+  // Bullet's articulated-body pass in test_joint_space_inertia.
+  options.joint_space_dynamics = false;
   PhysicsWorld world(vrrw_scene::loadScene("paper_multibot", load), options);
   world.setMode("ur5e", DriveMode::Compliant);
   const Eigen::Vector3d wrist = world.framePose("ur5e_wrist_1_link").translation();

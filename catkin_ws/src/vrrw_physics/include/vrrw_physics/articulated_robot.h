@@ -71,6 +71,8 @@ public:
 
   const std::string& name() const { return name_; }
   btMultiBody* body() const { return body_.get(); }
+  /// \brief M^-1 of the last updateDynamics (invalid after setState until the next one).
+  const JointSpaceResponse& response() const { return response_; }
   /// \brief Every movable joint, depth-first from the base (mimic joints included).
   const std::vector<SimJoint>& joints() const { return joints_; }
   /// \brief Index in joints() of a joint name, -1 when unknown.

@@ -41,6 +41,18 @@ private:
   bool valid_ = false;
 };
 
+/// \brief true when jointSpaceAccelerations can step `body` with `response`: a fixed base, one
+/// revolute or prismatic dof per link, body-local velocities, no joint feedback, Euler integration, a
+/// valid M of the current configuration.
+bool supportsJointSpaceAccelerations(const btMultiBody& body, const JointSpaceResponse& response);
+
+/// \brief The accelerations of Bullet's articulated-body pass (computeAccelerationsArticulatedBodyAlgorithmMultiDof
+/// with isConstraintPass false: joint torques, link forces and torques, gravity as link forces, damping and
+/// gyroscopic terms) as qdd = M^-1 (tau - c): c by one recursive Newton-Euler pass in Bullet's link frames with
+/// qdd = 0 (Featherstone 2008, ch. 5), M^-1 from `response`. `qdd` has 6 + dofs entries (the base's 6 are 0).
+/// Equal to Bullet's up to rounding; unlike Bullet's pass it caches nothing for contact rows.
+void jointSpaceAccelerations(const btMultiBody& body, const JointSpaceResponse& response, double* qdd);
+
 /// \brief Fills one solver row acting on up to two joint coordinates of `body` (coefficients on
 /// Bullet links link_a / link_b, link_b < 0 for none): the row drives the coordinate rate to
 /// `goal_velocity` with softness `cfm` (0: hard) inside [lower, upper] impulse bounds.

@@ -59,6 +59,9 @@ struct WorldOptions
                                      ///< btMultiBodyConstraintSolver, no broadphase filter), the reference
                                      ///< the default's MultiBodyWorld, JointRowSolver and SelfCollisionFilter
                                      ///< are tested against bit for bit (test_joint_row_solver)
+  bool joint_space_dynamics = true;  ///< step robot velocities by qdd = M^-1 (tau - c) instead of Bullet's
+                                     ///< articulated-body pass while a robot touches nothing
+                                     ///< (MultiBodyWorld; equal up to rounding; ignored with bullet_reference)
   double link_friction = 1.0;
   double max_joint_speed = 50.0;     ///< guard: rad/s or m/s
   double max_object_speed = 20.0;    ///< guard: m/s
