@@ -1,5 +1,6 @@
 // Node test (rostest, real master): real mode relays a goal to a stand-in driver only after it ran in
 // simulation and a confirmation arrived, byte-identical except for the documented prefix strip.
+#include <algorithm>
 #include <actionlib/client/simple_action_client.h>
 #include <actionlib/server/action_server.h>
 #include <gtest/gtest.h>
@@ -30,6 +31,11 @@ public:
     server_.start();
   }
   static constexpr double offset = 0.05;
+  std::vector<double> pose() const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return pose_.position;
+  }
   std::vector<control_msgs::FollowJointTrajectoryGoal> received() const
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -88,11 +94,21 @@ std::vector<uint8_t> bytes(const control_msgs::FollowJointTrajectoryGoal& g)
   return std::vector<uint8_t>(m.message_start, m.message_start + m.num_bytes - 4);
 }
 
+/// The real arm's pose, once the controller publishes it: after a preview ends the controller takes a
+/// few cycles to go back to the measured arm, and a goal built before then would start elsewhere.
 std::vector<double> armNow()
 {
+  const std::vector<double> real = driver->pose();
   sensor_msgs::JointState s;
-  EXPECT_TRUE(states->waitLatest(s));
-  return { s.position.begin(), s.position.begin() + 6 };
+  for (int attempt = 0; attempt < 250; ++attempt)
+  {
+    EXPECT_TRUE(states->waitLatest(s));
+    if (std::equal(real.begin(), real.end(), s.position.begin()))
+      return real;
+    ros::Duration(0.02).sleep();
+  }
+  ADD_FAILURE() << "the controller never published the real arm's pose";
+  return real;
 }
 }  // namespace
 
