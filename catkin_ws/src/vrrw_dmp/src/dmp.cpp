@@ -7,6 +7,7 @@
 #include <cstring>
 #include <ctime>
 
+#include "format_number.h"
 #include "vrrw_dmp/dmp_error.h"
 #include "vrrw_dmp/local_polynomial_derivative.h"
 
@@ -14,13 +15,6 @@ namespace vrrw_dmp
 {
 namespace
 {
-std::string format(double value)
-{
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.6g", value);
-  return buffer;
-}
-
 std::string utcNow()
 {
   const std::time_t now = std::time(nullptr);

@@ -3,20 +3,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "format_number.h"
 #include "vrrw_dmp/dmp_error.h"
 
 namespace vrrw_dmp
 {
-namespace
-{
-std::string format(double value)
-{
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.6g", value);
-  return buffer;
-}
-}  // namespace
-
 std::string toString(AmplitudeScaling scaling)
 {
   switch (scaling)

@@ -163,22 +163,25 @@ btScalar JointRowSolver::solveSingleIteration(int iteration, btCollisionObject**
   const auto normalImpulse = [this](const btMultiBodySolverConstraint& c) {
     return btScalar(m_multiBodyNormalContactConstraints[c.m_frictionIndex].m_appliedImpulse);
   };
+  const auto bound = [](btMultiBodySolverConstraint& c, btScalar total) {
+    c.m_lowerLimit = -(c.m_friction * total);
+    c.m_upperLimit = c.m_friction * total;
+  };
+  const auto solveFrictionRow = [&](btMultiBodySolverConstraint& c) {
+    const btScalar total = normalImpulse(c);
+    if (total > btScalar(0))
+    {
+      bound(c, total);
+      const btScalar change = resolveSingleConstraintRowGeneric(c);
+      residual = btMax(residual, change * change);
+      touched(c);
+    }
+  };
   if ((infoGlobal.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) &&
       (infoGlobal.m_solverMode & SOLVER_DISABLE_IMPLICIT_CONE_FRICTION) == 0)
   {
     for (int j = 0; j < m_multiBodySpinningFrictionContactConstraints.size(); ++j)
-    {
-      btMultiBodySolverConstraint& c = m_multiBodySpinningFrictionContactConstraints[j];
-      const btScalar total = normalImpulse(c);
-      if (total > btScalar(0))
-      {
-        c.m_lowerLimit = -(c.m_friction * total);
-        c.m_upperLimit = c.m_friction * total;
-        const btScalar change = resolveSingleConstraintRowGeneric(c);
-        residual = btMax(residual, change * change);
-        touched(c);
-      }
-    }
+      solveFrictionRow(m_multiBodySpinningFrictionContactConstraints[j]);
     for (int j = 0; j < m_multiBodyTorsionalFrictionContactConstraints.size(); ++j)
     {
       btMultiBodySolverConstraint& a = m_multiBodyTorsionalFrictionContactConstraints[j];
@@ -187,10 +190,8 @@ btScalar JointRowSolver::solveSingleIteration(int iteration, btCollisionObject**
       btMultiBodySolverConstraint& b = m_multiBodyTorsionalFrictionContactConstraints[j];
       if (total > btScalar(0) && a.m_frictionIndex == b.m_frictionIndex)
       {
-        a.m_lowerLimit = -(a.m_friction * total);
-        a.m_upperLimit = a.m_friction * total;
-        b.m_lowerLimit = -(b.m_friction * total);
-        b.m_upperLimit = b.m_friction * total;
+        bound(a, total);
+        bound(b, total);
         const btScalar change = resolveConeFrictionConstraintRows(a, b);
         residual = btMax(residual, change * change);
         touched(a);
@@ -205,10 +206,8 @@ btScalar JointRowSolver::solveSingleIteration(int iteration, btCollisionObject**
       btMultiBodySolverConstraint& b = m_multiBodyFrictionContactConstraints[j];
       if (a.m_frictionIndex == b.m_frictionIndex)
       {
-        a.m_lowerLimit = -(a.m_friction * total);
-        a.m_upperLimit = a.m_friction * total;
-        b.m_lowerLimit = -(b.m_friction * total);
-        b.m_upperLimit = b.m_friction * total;
+        bound(a, total);
+        bound(b, total);
         const btScalar change = resolveConeFrictionConstraintRows(a, b);
         residual = btMax(residual, change * change);
         touched(b);
@@ -219,18 +218,7 @@ btScalar JointRowSolver::solveSingleIteration(int iteration, btCollisionObject**
   else
   {
     for (int j = 0; j < m_multiBodyFrictionContactConstraints.size(); ++j)
-    {
-      btMultiBodySolverConstraint& c = m_multiBodyFrictionContactConstraints[j];
-      const btScalar total = normalImpulse(c);
-      if (total > btScalar(0))
-      {
-        c.m_lowerLimit = -(c.m_friction * total);
-        c.m_upperLimit = c.m_friction * total;
-        const btScalar change = resolveSingleConstraintRowGeneric(c);
-        residual = btMax(residual, change * change);
-        touched(c);
-      }
-    }
+      solveFrictionRow(m_multiBodyFrictionContactConstraints[j]);
   }
   return residual;
 }

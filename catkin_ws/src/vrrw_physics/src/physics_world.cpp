@@ -64,12 +64,9 @@ DriveGainTable loadTables(const vrrw_scene::Robot& robot)
   DriveGainTable table;
   if (fileExists(robot.config_file))
     table = loadDriveGains(robot.config_file);
-  if (robot.gripper.empty() || robot.config_file.empty())
-    return table;
-  const std::string gripper_file = robot.config_file.substr(0, robot.config_file.rfind('/') + 1) + robot.gripper + ".yaml";
-  if (fileExists(gripper_file))
+  if (fileExists(robot.gripper_config_file))
   {
-    const DriveGainTable gripper = loadDriveGains(gripper_file);
+    const DriveGainTable gripper = loadDriveGains(robot.gripper_config_file);
     for (const std::string& joint : robot.gripper_joints)
     {
       const std::string name = unprefixed(joint, robot.name);

@@ -7,22 +7,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "pendulum_fixture.h"
+
 using namespace vrrw_physics;
 
-namespace
-{
-urdf::ModelInterfaceSharedPtr model()
-{
-  std::ifstream in(std::string(TEST_DATA) + "/pendulum.urdf");
-  std::stringstream text;
-  text << in.rdbuf();
-  return urdf::parseURDF(text.str());
-}
-}  // namespace
 
 TEST(ArticulatedRobot, MergesFixedLinksAndMatchesUrdfKinematics)
 {
-  const auto urdf = model();
+  const auto urdf = vrrw_physics_test::pendulumModel();
   ArticulatedRobot robot(*urdf, "p", "p_base_link");
   ASSERT_EQ(robot.joints().size(), 1u);
   EXPECT_EQ(robot.body()->getNumLinks(), 1);  // p_tip merged into p_arm
@@ -41,7 +33,7 @@ TEST(ArticulatedRobot, MergesFixedLinksAndMatchesUrdfKinematics)
 
 TEST(ArticulatedRobot, PrismaticJointMovesAlongItsAxis)
 {
-  const auto urdf = model();
+  const auto urdf = vrrw_physics_test::pendulumModel();
   ArticulatedRobot robot(*urdf, "s", "s_base_link");
   robot.setState({ 0.25 }, { 0.0 });
   EXPECT_NEAR((robot.linkPose("s_carriage").translation() - Eigen::Vector3d(3, 0, 0.25)).norm(), 0.0, 1e-6);
@@ -50,7 +42,7 @@ TEST(ArticulatedRobot, PrismaticJointMovesAlongItsAxis)
 
 TEST(ArticulatedRobot, MimicJointGetsACouplingNotADrive)
 {
-  const auto urdf = model();
+  const auto urdf = vrrw_physics_test::pendulumModel();
   ArticulatedRobot robot(*urdf, "g", "g_base_link");
   ASSERT_EQ(robot.joints().size(), 2u);
   EXPECT_EQ(robot.drives().size(), 1u);
@@ -63,7 +55,7 @@ TEST(ArticulatedRobot, MimicJointGetsACouplingNotADrive)
 
 TEST(ArticulatedRobot, GravityTorqueIsMassTimesLeverArm)
 {
-  const auto urdf = model();
+  const auto urdf = vrrw_physics_test::pendulumModel();
   ArticulatedRobot robot(*urdf, "v", "v_base_link");
   robot.setState({ 0.0 }, { 0.0 });
   // Arm along +x, hinge about +y: gravity's torque about +y is +m g l (pulls x down = positive about y).
@@ -74,7 +66,7 @@ TEST(ArticulatedRobot, GravityTorqueIsMassTimesLeverArm)
 
 TEST(ArticulatedRobot, UnknownBaseLinkIsNamed)
 {
-  const auto urdf = model();
+  const auto urdf = vrrw_physics_test::pendulumModel();
   try
   {
     ArticulatedRobot robot(*urdf, "x", "x_base_link");

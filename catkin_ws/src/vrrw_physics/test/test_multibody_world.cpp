@@ -17,6 +17,8 @@
 #include <sstream>
 #include <vector>
 
+#include "pendulum_fixture.h"
+
 using namespace vrrw_physics;
 
 namespace
@@ -25,10 +27,7 @@ namespace
 /// falls onto it: joint position and velocity of every step, then the number of steps in contact.
 std::vector<float> drop(bool stock_world)
 {
-  std::ifstream in(std::string(TEST_DATA) + "/pendulum.urdf");
-  std::stringstream text;
-  text << in.rdbuf();
-  const auto model = urdf::parseURDF(text.str());
+  const auto model = vrrw_physics_test::pendulumModel();
   btDefaultCollisionConfiguration config;
   btCollisionDispatcher dispatcher(&config);
   btDbvtBroadphase broadphase;

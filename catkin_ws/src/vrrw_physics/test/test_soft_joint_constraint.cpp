@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "pendulum_fixture.h"
+
 using namespace vrrw_physics;
 
 namespace
@@ -15,12 +17,9 @@ const double kInertia = 0.51;  // about the hinge axis, see test/data/pendulum.u
 
 vrrw_scene::Scene pendulumScene()
 {
-  std::ifstream in(std::string(TEST_DATA) + "/pendulum.urdf");
-  std::stringstream text;
-  text << in.rdbuf();
   vrrw_scene::Scene scene;
   scene.name = "pendulum";
-  scene.urdf = text.str();
+  scene.urdf = vrrw_physics_test::pendulumUrdf();
   vrrw_scene::Robot p;
   p.name = "p";
   p.base_link = "p_base_link";

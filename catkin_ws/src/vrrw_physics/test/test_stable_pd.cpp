@@ -13,29 +13,21 @@
 #include <fstream>
 #include <sstream>
 
+#include "pendulum_fixture.h"
+
 using namespace vrrw_physics;
 
-namespace
-{
-urdf::ModelInterfaceSharedPtr model()
-{
-  std::ifstream in(std::string(TEST_DATA) + "/pendulum.urdf");
-  std::stringstream text;
-  text << in.rdbuf();
-  return urdf::parseURDF(text.str());
-}
-}  // namespace
 
 TEST(JointSpaceInertia, InertiaOfThePendulumIsItsMomentAboutTheAxis)
 {
-  const auto urdf = model();
+  const auto urdf = vrrw_physics_test::pendulumModel();
   ArticulatedRobot robot(*urdf, "p", "p_base_link");
   EXPECT_NEAR(jointSpaceInertia(robot)(0, 0), 0.51, 1e-9);
 }
 
 TEST(JointSpaceInertia, InertiaMatchesBulletsResponseToJointImpulses)
 {
-  const auto urdf = model();
+  const auto urdf = vrrw_physics_test::pendulumModel();
   btDefaultCollisionConfiguration config;
   btCollisionDispatcher dispatcher(&config);
   btDbvtBroadphase broadphase;
@@ -65,7 +57,7 @@ TEST(JointSpaceInertia, InertiaMatchesBulletsResponseToJointImpulses)
 
 TEST(StablePd, ImplicitTorqueBringsTheJointToItsPredictedVelocity)
 {
-  const auto urdf = model();
+  const auto urdf = vrrw_physics_test::pendulumModel();
   ArticulatedRobot robot(*urdf, "p", "p_base_link");
   robot.setState({ 0.0 }, { 0.2 });
   robot.drives()[0]->setGains(1e5, 8e4);

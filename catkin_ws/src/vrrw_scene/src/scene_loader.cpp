@@ -168,8 +168,9 @@ void setInitial(const urdf::ModelInterface& model, const std::string& prefix, co
 }
 
 /// Each movable joint's limit: a gripper joint's from the gripper config, every other one's from the model config.
-std::map<std::string, double> accelerationLimits(const Robot& robot, const std::string& gripper_config)
+std::map<std::string, double> accelerationLimits(const Robot& robot)
 {
+  const std::string& gripper_config = robot.gripper_config_file;
   const std::string prefix = robot.name + "_";
   const auto arm = loadAccelerationLimits(robot.config_file, prefix);
   const auto hand = gripper_config.empty() ? arm : loadAccelerationLimits(gripper_config, prefix);
@@ -234,12 +235,11 @@ Robot makeRobot(const urdf::ModelInterface& model, const RobotSpec& spec, const 
   setInitial(model, prefix, spec.initial, spec.field, robot);
   if (!spec.config.empty())
     robot.config_file = spec.config;
+  const auto gripper = catalog.grippers.find(spec.gripper);
+  if (gripper != catalog.grippers.end() && !gripper->second.config.empty())
+    robot.gripper_config_file = root + "/urdf/" + gripper->second.config;
   if (!robot.config_file.empty())
-  {
-    const auto gripper = catalog.grippers.find(spec.gripper);
-    const bool has_config = gripper != catalog.grippers.end() && !gripper->second.config.empty();
-    robot.acceleration_limits = accelerationLimits(robot, has_config ? root + "/urdf/" + gripper->second.config : "");
-  }
+    robot.acceleration_limits = accelerationLimits(robot);
   return robot;
 }
 }  // namespace

@@ -60,6 +60,7 @@ struct Robot
   std::vector<std::string> gripper_joints;  ///< actuated gripper joints (mimic joints follow them)
   std::map<std::string, double> initial_positions;  ///< every movable joint
   std::string config_file;  ///< urdf/config/<model>.yaml: acceleration limits and drive gains
+  std::string gripper_config_file;  ///< urdf/config/<gripper>.yaml, or empty
   /// \brief rad/s^2 (m/s^2 prismatic) of every movable joint, from config_file and the gripper's config;
   /// empty for a robot with its own description (it has no config).
   std::map<std::string, double> acceleration_limits;
