@@ -18,4 +18,13 @@ std::map<std::string, double> loadAccelerationLimits(const std::string& config_f
   }
   return limits;
 }
+
+double loadFingertipLeverArm(const std::string& gripper_config_file)
+{
+  const auto field = YamlField::loadFile(gripper_config_file)["fingertip_lever_arm"];
+  const double lever_arm = field.asDouble();
+  if (!(lever_arm > 0.0))
+    field.fail("must be a positive length in m, got " + field.asString());
+  return lever_arm;
+}
 }  // namespace vrrw_scene
