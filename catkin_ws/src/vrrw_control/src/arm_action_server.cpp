@@ -18,8 +18,11 @@ const char* const kFreeDrive = "free-drive active";
 
 ros::NodeHandle sizedActionQueues(ros::NodeHandle& nh, const std::string& name, int size)
 {
-  nh.setParam(name + "/actionlib_server_sub_queue_size", size);
-  nh.setParam(name + "/actionlib_server_pub_queue_size", size);
+  for (const char* side : { "server", "client" })
+  {
+    nh.setParam(name + "/actionlib_" + side + "_sub_queue_size", size);
+    nh.setParam(name + "/actionlib_" + side + "_pub_queue_size", size);
+  }
   return nh;
 }
 

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <vrrw_control/msg_conversions.h>
 
 namespace vrrw_control
@@ -56,7 +57,11 @@ std::string applyTolerances(const std::vector<control_msgs::JointTolerance>& pat
                             const std::vector<std::string>& joints, Tolerances& tol)
 {
   if (!std::isfinite(goal_time) || goal_time < 0.0)
-    return "goal_time_tolerance " + std::to_string(goal_time) + " s: must be >= 0 (0: the default)";
+  {
+    std::ostringstream why;
+    why << "goal_time_tolerance " << goal_time << " s: must be >= 0 (0: the default)";
+    return why.str();
+  }
   std::string error;
   if (!apply(path, joints, tol.path_position, tol.path_velocity, error, "path") ||
       !apply(goal, joints, tol.goal_position, tol.goal_velocity, error, "goal"))

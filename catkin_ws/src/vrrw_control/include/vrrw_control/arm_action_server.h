@@ -76,7 +76,8 @@ private:
 };
 
 /// \brief Sets actionlib's queue sizes of the action `name` (relative to `nh`) to `size`, before its
-/// server is built: actionlib's default of 50 drops goals (and results) of a larger burst, which
-/// leaves their clients waiting forever.
+/// server is built: actionlib's defaults (server 50, C++ client 10 goals) drop goals and results of a
+/// larger burst, which leaves their clients waiting forever. The client sizes are read from the
+/// action's namespace by every roscpp ActionClient of it created afterwards.
 ros::NodeHandle sizedActionQueues(ros::NodeHandle& nh, const std::string& name, int size);
 }  // namespace vrrw_control
