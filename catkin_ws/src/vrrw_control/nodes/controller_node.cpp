@@ -67,7 +67,7 @@ private:
     if (mode_ == "physics")
     {
       link_ = std::make_unique<RosDriveLink>(nh_, "drive_targets", "joint_states");
-      hw_ = std::make_unique<PhysicsRobot>(joints_, *link_, pnh.param("state_timeout", 0.5));
+      hw_ = std::make_unique<PhysicsRobot>(joints_, *link_, pnh.param("state_timeout", 1.0));
     }
     else
       hw_ = std::make_unique<FakeRobot>(joints_);

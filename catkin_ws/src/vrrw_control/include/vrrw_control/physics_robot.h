@@ -10,7 +10,7 @@ namespace vrrw_control
 class PhysicsRobot : public RobotHardware
 {
 public:
-  PhysicsRobot(std::vector<std::string> joints, DriveLink& link, double state_timeout = 0.5);
+  PhysicsRobot(std::vector<std::string> joints, DriveLink& link, double state_timeout = 1.0);
   void read(double time, double period) override;
   void write(double time, double period) override;
   bool ready() const override { return ready_; }
