@@ -131,7 +131,7 @@ private:
     g.max_velocity = std::isfinite(limits.max_velocity) ? limits.max_velocity : g.max_velocity;
     g.min_duration = pnh.param("gripper_min_duration", g.min_duration);
     g.lever_arm = robot_.gripper_lever_arm;
-    g.max_joint_effort = std::isfinite(limits.max_effort) ? limits.max_effort : 0.0;
+    g.max_grip_force = robot_.max_grip_force;
     gripper_ = std::make_unique<GripperController>(*hw_, robot_.gripper_joint, g);
     gripper_server_ = std::make_unique<GripperActionServer>(nh_, *gripper_, *hw_, server_options_.clock_origin,
                                                             pnh.param("allow_stalling", true), server_options_.queue_size);

@@ -14,11 +14,9 @@ RobotDescription fromScene(const std::string& scene_name, const std::string& nam
   const auto* robot = scene.robot(name);
   if (!robot)
     throw std::runtime_error("~scene " + scene_name + ": robot " + name + ": not in the scene");
-  RobotDescription d{ scene.urdf, robot->arm_joints, robot->gripper_joints.empty() ? "" : robot->gripper_joints.front(),
-                      robot->initial_positions, robot->acceleration_limits };
-  if (!robot->gripper_config_file.empty())
-    d.gripper_lever_arm = vrrw_scene::loadFingertipLeverArm(robot->gripper_config_file);
-  return d;
+  return { scene.urdf, robot->arm_joints, robot->gripper_joints.empty() ? "" : robot->gripper_joints.front(),
+           robot->initial_positions, robot->acceleration_limits, robot->fingertip_lever_arm,
+           robot->max_grip_force };
 }
 
 RobotDescription fromParameters(ros::NodeHandle& nh, ros::NodeHandle& pnh, const std::string& name)
@@ -37,6 +35,7 @@ RobotDescription fromParameters(ros::NodeHandle& nh, ros::NodeHandle& pnh, const
   if (pnh.getParam("config_file", config_file))
     d.acceleration_limits = vrrw_scene::loadAccelerationLimits(config_file, p);
   pnh.getParam("gripper_lever_arm", d.gripper_lever_arm);
+  pnh.getParam("max_grip_force", d.max_grip_force);
   return d;
 }
 }  // namespace

@@ -15,10 +15,11 @@ struct RobotDescription
   std::map<std::string, double> initial;
   std::map<std::string, double> acceleration_limits;
   double gripper_lever_arm = 0.0;  ///< m, fingertip_lever_arm of the gripper config; 0: unknown
+  double max_grip_force = 0.0;     ///< N, max_grip_force of the gripper config; 0: unknown
 };
 
 /// \brief Reads ~scene (a shipped name or a YAML) or, without it, /robot_description with ~arm_joints,
-/// ~config_file, ~gripper_lever_arm; ~gripper_joint and ~initial_positions override either.
+/// ~config_file, ~gripper_lever_arm, ~max_grip_force; ~gripper_joint and ~initial_positions override either.
 /// Throws std::runtime_error naming the parameter.
 RobotDescription describeRobot(ros::NodeHandle& nh, ros::NodeHandle& pnh, const std::string& name);
 }  // namespace vrrw_control

@@ -14,14 +14,6 @@ GripperController::GripperController(RobotHardware& hardware, const std::string&
   hold_ = hw_.command().positions[index_];
 }
 
-double GripperController::maxGripForce() const
-{
-  return options_.lever_arm > 0.0 && options_.max_joint_effort > 0.0 &&
-                 std::isfinite(options_.max_joint_effort) ?
-             options_.max_joint_effort / options_.lever_arm :
-             0.0;
-}
-
 std::string GripperController::check(double position, double max_effort) const
 {
   std::ostringstream why;
@@ -31,11 +23,10 @@ std::string GripperController::check(double position, double max_effort) const
     why << "joint " << joint_ << ": position " << position << " outside limits [" << options_.min_position << ", "
         << options_.max_position << "]";
   else if (!std::isfinite(max_effort) || max_effort < 0.0)
-    why << "max_effort " << max_effort << ": must be a finite fingertip force >= 0 N (0: the default)";
-  else if (maxGripForce() > 0.0 && max_effort > maxGripForce() * (1.0 + 1e-9))
-    why << "max_effort " << max_effort << " N exceeds the gripper's maximum grip force " << maxGripForce()
-        << " N (joint " << joint_ << ": " << options_.max_joint_effort << " N m / lever arm " << options_.lever_arm
-        << " m)";
+    why << "max_effort " << max_effort << ": must be a finite grip force >= 0 N (0: the default)";
+  else if (options_.max_grip_force > 0.0 && max_effort > options_.max_grip_force)
+    why << "max_effort " << max_effort << " N exceeds the gripper's rated grip force " << options_.max_grip_force
+        << " N";
   return why.str();
 }
 

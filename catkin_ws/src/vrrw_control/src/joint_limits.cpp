@@ -28,8 +28,6 @@ std::vector<JointLimits> loadJointLimits(const std::string& urdf_xml, const std:
       }
       if (joint->limits->velocity > 0.0)
         l.max_velocity = joint->limits->velocity;
-      if (joint->limits->effort > 0.0)
-        l.max_effort = joint->limits->effort;
     }
     if (acceleration_limits.count(name))
       l.max_acceleration = acceleration_limits.at(name);

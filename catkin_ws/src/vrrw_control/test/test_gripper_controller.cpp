@@ -71,20 +71,17 @@ TEST(GripperController, MaxEffortBecomesTheActuatedJointsDriveLimit)
 {
   FakeRobot hw({ "g_finger_joint" });
   GripperOptions o;
-  o.lever_arm = 0.05695;  // robotiq_2f_85.yaml
-  o.max_joint_effort = 13.4;  // the URDF: 235 N x lever arm
+  o.lever_arm = 0.0182;  // robotiq_2f_85.yaml
+  o.max_grip_force = 235.0;
   GripperController g(hw, "g_finger_joint", o);
-  EXPECT_NEAR(g.maxGripForce(), 235.3, 0.1);
   EXPECT_TRUE(g.check(0.5, 100.0).empty());
   g.start(0.5, 0.0, 100.0);
   g.update(0.01);
-  EXPECT_NEAR(hw.effortLimits()[0], 5.695, 1e-12);
+  EXPECT_NEAR(hw.effortLimits()[0], 1.82, 1e-12);
   g.start(0.2, 1.0, 0.0);  // 0: the configured limit again
   g.update(1.01);
   EXPECT_EQ(hw.effortLimits()[0], 0.0);
-  EXPECT_NE(g.check(0.5, 300.0).find("max_effort 300 N exceeds the gripper's maximum grip force 235"),
-            std::string::npos)
-      << g.check(0.5, 300.0);
-  EXPECT_NE(g.check(0.5, -1.0).find("max_effort -1: must be a finite fingertip force >= 0 N"), std::string::npos);
+  EXPECT_EQ(g.check(0.5, 300.0), "max_effort 300 N exceeds the gripper's rated grip force 235 N");
+  EXPECT_EQ(g.check(0.5, -1.0), "max_effort -1: must be a finite grip force >= 0 N (0: the default)");
   EXPECT_NE(g.check(0.5, std::nan("")).find("max_effort nan"), std::string::npos);
 }

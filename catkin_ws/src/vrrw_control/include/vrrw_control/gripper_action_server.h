@@ -9,7 +9,7 @@ namespace vrrw_control
 {
 /// \brief The GripperCommand action of one gripper: position of the actuated joint, feedback every
 /// cycle, result reached_goal or stalled (succeeded when stalling is allowed, aborted otherwise);
-/// `max_effort` (fingertip force, N) bounds the squeeze through the actuated joint's drive limit.
+/// `max_effort` (pad force, N) bounds the squeeze through the actuated joint's drive force limit.
 class GripperActionServer
 {
 public:

@@ -16,10 +16,10 @@ struct GripperOptions
   double stall_velocity = 0.01;    ///< mean speed over stall_time below which the fingers do not move
   double stall_time = 0.2;         ///< s without motion short of the goal: stalled
   double timeout = 5.0;            ///< s after the planned move end
-  /// \brief m from the actuated joint's axis to the fingertip: a fingertip force F (GripperCommand
-  /// max_effort) is a joint torque limit F x lever_arm. 0: max_effort is not enforced.
+  /// \brief m: a pad force F (GripperCommand max_effort, N) is the actuated joint's drive force limit
+  /// F x lever_arm (the gripper config's fingertip_lever_arm). 0: max_effort is not enforced.
   double lever_arm = 0.0;
-  double max_joint_effort = 0.0;  ///< N m (N) the actuated joint can give, the URDF limit; 0: unknown
+  double max_grip_force = 0.0;  ///< N, the rated pad force; larger max_effort is refused (0: no bound)
 };
 
 /// \brief Moves the actuated gripper joint along a smooth cubic to the commanded position and
@@ -38,13 +38,11 @@ public:
   GripperController(RobotHardware& hardware, const std::string& joint, GripperOptions options);
 
   /// \brief Empty when acceptable, else one line naming the field and the reason. `max_effort`: the
-  /// fingertip force in N, as Robotiq specifies grip force (0: the configured drive limit).
+  /// pad force in N, as Robotiq rates grip force (0: the configured drive limit).
   std::string check(double position, double max_effort = 0.0) const;
-  /// \brief Moves to `position`, squeezing with at most `max_effort` N at the fingertips (0: the
-  /// configured drive limit) until the next goal.
+  /// \brief Moves to `position`, squeezing with at most `max_effort` N per pad (0: the configured
+  /// drive limit) until the next goal.
   void start(double position, double now, double max_effort = 0.0);
-  /// \brief The largest fingertip force the actuated joint can give (N), 0 when not known.
-  double maxGripForce() const;
   void stop(double now);
   /// \brief Ends the goal and forgets the state: the next update() holds what the hardware commands then.
   void release();

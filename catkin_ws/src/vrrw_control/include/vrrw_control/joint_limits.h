@@ -15,7 +15,6 @@ struct JointLimits
   double max_position = std::numeric_limits<double>::infinity();
   double max_velocity = std::numeric_limits<double>::infinity();
   double max_acceleration = std::numeric_limits<double>::infinity();
-  double max_effort = std::numeric_limits<double>::infinity();  ///< URDF effort limit (N m, N)
 };
 
 /// \brief Limits of the named joints from a URDF, with max_acceleration from `acceleration_limits` (prefixed joint
