@@ -199,7 +199,10 @@ int run(int argc, char** argv)
   if (o.count("csv"))
     return execute(robot, fromCsv(robot, o.at("csv")));
   if (o.count("joints"))
-    return execute(robot, toJoints(robot, o.at("joints"), o.count("duration") ? numbers(o.at("duration"), "--duration").at(0) : 0.0));
+  {
+    const double duration = o.count("duration") ? numbers(o.at("duration"), "--duration").at(0) : 0.0;
+    return execute(robot, toJoints(robot, o.at("joints"), duration));
+  }
   if (o.count("gripper"))
     return gripper(robot, numbers(o.at("gripper"), "--gripper").at(0),
                    o.count("effort") ? numbers(o.at("effort"), "--effort").at(0) : 0.0);

@@ -68,8 +68,8 @@ void ArmActionServer::finish(int code, const std::string& message)
   phase_ = Phase::Idle;
 }
 
-std::pair<int, std::string> ArmActionServer::admissible(const control_msgs::FollowJointTrajectoryGoal& goal, const ros::Time& start,
-                                                        const ros::Time& now) const
+std::pair<int, std::string> ArmActionServer::admissible(const control_msgs::FollowJointTrajectoryGoal& goal,
+                                                        const ros::Time& start, const ros::Time& now) const
 {
   if (free_drive_)
     return { Result::INVALID_GOAL, kFreeDrive };
@@ -123,6 +123,7 @@ void ArmActionServer::onGoal(GoalHandle gh)
   if (measured)
     arm_.adopt(realArm());  // the preview starts where the real arm is
   arm_.start(plan, tolerances, toTime(now));
+  goal_start_ = plan.start;
   active_ = gh;
   phase_ = Phase::Simulating;
 }
@@ -234,19 +235,19 @@ void ArmActionServer::publishFeedback(const ros::Time& now, const ArmController:
   control_msgs::FollowJointTrajectoryFeedback f;
   f.header.stamp = now;
   f.joint_names = arm_.joints();
-  f.desired = toPointMsg(cycle.desired);
-  f.actual = toPointMsg(cycle.actual);
-  f.error = toPointMsg(cycle.error);
+  const double elapsed = std::max(0.0, toTime(now) - goal_start_);  // time_from_start, as joint_trajectory_controller
+  f.desired = toPointMsg(cycle.desired, elapsed);
+  f.actual = toPointMsg(cycle.actual, elapsed);
+  f.error = toPointMsg(cycle.error, elapsed);
   active_.publishFeedback(f);
 }
 
 void ArmActionServer::update(const ros::Time& now)
 {
-  if (suspended_)
-  {
-    suspended_ = false;
+  if (suspended_ && updated_)
     ROS_INFO_STREAM(name_ << ": joint_states are back; holding the measured pose");
-  }
+  suspended_ = false;
+  updated_ = true;
   if (real_ && real_->ready() && (phase_ == Phase::Idle || phase_ == Phase::Relaying))
     arm_.adopt(realArm());
   const ArmController::Cycle c = arm_.update(toTime(now));

@@ -101,8 +101,8 @@ TEST(PhysicsOperator, APushedCompliantArmHoldsItsPoseAfterFreeDrive)
   const auto measured = cell->states.since(pushed);
   for (const auto& target : cell->targets.since(pushed + ros::Duration(0.1)))
   {
-    const auto after = std::lower_bound(measured.begin(), measured.end(), target.header.stamp,
-                                        [](const sensor_msgs::JointState& m, const ros::Time& t) { return m.header.stamp < t; });
+    const auto earlier = [](const sensor_msgs::JointState& m, const ros::Time& t) { return m.header.stamp < t; };
+    const auto after = std::lower_bound(measured.begin(), measured.end(), target.header.stamp, earlier);
     if (after == measured.begin() || after == measured.end())
       continue;
     const auto& state = *(after - 1);  // the newest state the controller could have read

@@ -51,7 +51,8 @@ private:
   double toTime(const ros::Time& t) const { return (t - origin_).toSec(); }
   void onGoal(GoalHandle gh);
   /// Empty when the goal may be planned now, else the result code and message of its rejection.
-  std::pair<int, std::string> admissible(const control_msgs::FollowJointTrajectoryGoal& goal, const ros::Time& start, const ros::Time& now) const;
+  std::pair<int, std::string> admissible(const control_msgs::FollowJointTrajectoryGoal& goal, const ros::Time& start,
+                                         const ros::Time& now) const;
   void onCancel(GoalHandle gh);
   bool onConfirm(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res);
   void reject(GoalHandle& gh, int code, const std::string& message);
@@ -70,8 +71,10 @@ private:
   GoalHandle active_;
   Phase phase_ = Phase::Idle;
   ros::Time confirm_deadline_;
+  double goal_start_ = 0.0;  ///< controller time the active goal's motion starts
   std::string name_;
-  bool suspended_ = false;
+  bool suspended_ = true;  ///< no state yet, or the states stopped
+  bool updated_ = false;   ///< some cycle ran with a state
   bool free_drive_ = false;
 };
 

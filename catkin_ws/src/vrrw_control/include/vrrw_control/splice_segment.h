@@ -27,8 +27,9 @@ SpliceCheck checkSplice(SplineSegment::Order order, const JointSample& from, con
                         double duration, const std::vector<JointLimits>& limits, double share = 1.0);
 
 /// \brief The shortest duration >= `at_least` (to 1 %) over which that segment keeps kSpliceShare of
-/// every limit (so that the peaks between the samples stay inside): the time-optimal blend of this shape. Infinity when no duration up to kLongestSplice does (e.g. the
-/// overshoot of a fast arm would leave its position limits).
+/// every limit (so that the peaks between the samples stay inside): the time-optimal blend of this
+/// shape. Infinity when no duration up to kLongestSplice does (e.g. the overshoot of a fast arm would
+/// leave its position limits).
 double shortestSplice(SplineSegment::Order order, const JointSample& from, const JointSample& to, double at_least,
                       const std::vector<JointLimits>& limits);
 
