@@ -6,6 +6,7 @@ reader): {"out": PNG, "title": str, "joints": [names], "series": [{"label", "t":
 """
 import json
 import math
+import os
 import sys
 
 import matplotlib
@@ -38,7 +39,19 @@ def main():
     if data.get("title"):
         figure.suptitle(data["title"])
     figure.tight_layout()
-    figure.savefig(data["out"], dpi=110)
+    save_whole(figure, data["out"])
+
+
+def save_whole(figure, out):
+    """Saves beside the target and renames when complete, so a failed plot never leaves a partial file."""
+    partial = f"{out}.partial-{os.getpid()}"
+    extension = os.path.splitext(out)[1][1:].lower() or "png"
+    try:
+        figure.savefig(partial, dpi=110, format=extension)
+        os.replace(partial, out)
+    finally:
+        if os.path.exists(partial):
+            os.remove(partial)
 
 
 if __name__ == "__main__":

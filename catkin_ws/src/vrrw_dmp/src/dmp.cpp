@@ -1,74 +1,16 @@
-#include "vrrw_dmp/dmp.h"
+#include <vrrw_dmp/dmp.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <ctime>
+
+#include <vrrw_dmp/dmp_error.h>
 
 #include "format_number.h"
-#include "vrrw_dmp/dmp_error.h"
-#include "vrrw_dmp/local_polynomial_derivative.h"
 
 namespace vrrw_dmp
 {
 namespace
 {
-std::string utcNow()
-{
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char buffer[32];
-  std::strftime(buffer, sizeof(buffer), "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return buffer;
-}
-
-/// FNV-1a over the 64-bit patterns of the demonstration's times and positions.
-std::string checksum(const vrrw_trajectory::JointTrajectory& demo)
-{
-  std::uint64_t hash = 1469598103934665603ull;
-  auto mix = [&hash](double value) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &value, sizeof(bits));
-    hash = (hash ^ bits) * 1099511628211ull;
-  };
-  for (const auto& point : demo.points)
-  {
-    mix(point.time);
-    for (double q : point.positions)
-      mix(q);
-  }
-  char buffer[20];
-  std::snprintf(buffer, sizeof(buffer), "%016llx", static_cast<unsigned long long>(hash));
-  return buffer;
-}
-
-void checkDemo(const vrrw_trajectory::JointTrajectory& demo)
-{
-  const std::size_t n = demo.joint_names.size();
-  if (n == 0)
-    throw DmpError("demo: no joints");
-  if (demo.points.size() < 3)
-    throw DmpError("demo: " + std::to_string(demo.points.size()) + " sample(s), learning needs at least 3");
-  auto where = [](std::size_t k) { return "demo: sample " + std::to_string(k) + ": "; };
-  for (std::size_t k = 0; k < demo.points.size(); ++k)
-  {
-    const auto& point = demo.points[k];
-    if (point.positions.size() != n)
-      throw DmpError(where(k) + std::to_string(point.positions.size()) + " positions for " + std::to_string(n) +
-                     " joints");
-    if (!std::isfinite(point.time))
-      throw DmpError(where(k) + "time is not finite");
-    if (k > 0 && !(point.time > demo.points[k - 1].time))
-      throw DmpError(where(k) + "time " + format(point.time) + " is not after " + format(demo.points[k - 1].time));
-    for (std::size_t j = 0; j < n; ++j)
-      if (!std::isfinite(point.positions[j]))
-        throw DmpError(where(k) + "joint '" + demo.joint_names[j] + "' position is not finite");
-  }
-}
-
 void checkVector(const std::vector<double>& values, std::size_t n, const std::string& what,
                  const std::string& per = "joints")
 {
@@ -119,113 +61,6 @@ Dmp::Dmp(std::vector<std::string> joint_names, DmpParameters parameters, Gaussia
   }
   if (!(demo_duration_ > 0.0) || !std::isfinite(demo_duration_))
     throw DmpError("model: demo duration " + format(demo_duration_) + " must be > 0");
-}
-
-Dmp Dmp::learn(const vrrw_trajectory::JointTrajectory& demo, const DmpParameters& parameters,
-               const DmpProvenance& provenance)
-{
-  parameters.validate();
-  checkDemo(demo);
-  const std::size_t n = demo.joint_names.size();
-  const std::size_t samples = demo.points.size();
-  const double t0 = demo.points.front().time;
-  const double duration = demo.points.back().time - t0;
-
-  std::vector<double> times(samples);
-  std::vector<double> y(samples * n);
-  for (std::size_t k = 0; k < samples; ++k)
-  {
-    times[k] = demo.points[k].time - t0;
-    std::copy(demo.points[k].positions.begin(), demo.points[k].positions.end(), y.begin() + k * n);
-  }
-  std::vector<double> yd(samples * n);
-  std::vector<double> ydd(samples * n);
-  const LocalPolynomialDerivative derivative(times, parameters.derivative_half_window);
-  for (std::size_t j = 0; j < n; ++j)
-    derivative.apply(y.data() + j, n, yd.data() + j, ydd.data() + j);
-
-  std::vector<double> start(y.begin(), y.begin() + n);
-  std::vector<double> goal(y.end() - n, y.end());
-  std::vector<double> amplitude(n);
-  std::vector<AmplitudeScaling> scaling(n);
-  std::vector<double> scale(n);
-  std::vector<std::string> warnings;
-  for (std::size_t j = 0; j < n; ++j)
-  {
-    double low = y[j];
-    double high = y[j];
-    for (std::size_t k = 0; k < samples; ++k)
-    {
-      low = std::min(low, y[k * n + j]);
-      high = std::max(high, y[k * n + j]);
-    }
-    amplitude[j] = high - low;
-    const double offset = goal[j] - start[j];
-    const bool degenerate = amplitude[j] > 0.0 && std::abs(offset) <= parameters.degenerate_ratio * amplitude[j];
-    scaling[j] = parameters.scaling == AmplitudeScaling::automatic ?
-                     (degenerate ? AmplitudeScaling::demo_amplitude : AmplitudeScaling::goal_offset) :
-                     parameters.scaling;
-    if (degenerate && scaling[j] == AmplitudeScaling::goal_offset)
-      warnings.push_back("joint '" + demo.joint_names[j] + "': g - x0 = " + format(offset) +
-                         " is within " + format(100.0 * parameters.degenerate_ratio) +
-                         "% of the demonstrated range " + format(amplitude[j]) +
-                         ", so the forcing term (scaled by g - x0) " +
-                         (offset == 0.0 ? "vanishes and the motion is lost" : "explodes on a new goal") +
-                         "; learn with scaling 'auto' or 'amplitude' to scale by the demonstrated range instead");
-    else if (degenerate)
-      warnings.push_back("joint '" + demo.joint_names[j] + "': g - x0 = " + format(offset) +
-                         " is within " + format(100.0 * parameters.degenerate_ratio) +
-                         "% of the demonstrated range; its forcing term is scaled by the range " +
-                         format(amplitude[j]));
-    if (scaling[j] == AmplitudeScaling::goal_offset)
-      scale[j] = offset;
-    else
-      scale[j] = amplitude[j] > 0.0 ? amplitude[j] : 1.0;
-  }
-
-  const GaussianBasis basis(parameters.basis_count, parameters.alpha);
-  const std::size_t count = basis.size();
-  const double K = parameters.K;
-  const double D = parameters.damping();
-  std::vector<double> numerator(n * count, 0.0);
-  std::vector<double> denominator(count, 0.0);
-  std::vector<double> psi(count);
-  std::vector<double> target(n);
-  for (std::size_t k = 0; k < samples; ++k)
-  {
-    const double s = std::exp(-parameters.alpha * times[k] / duration);
-    const double quadrature = 0.5 * (times[std::min(k + 1, samples - 1)] - times[k > 0 ? k - 1 : 0]);
-    for (std::size_t j = 0; j < n; ++j)
-    {
-      const std::size_t at = k * n + j;
-      const double force = duration * duration * ydd[at] - K * (goal[j] - y[at]) + D * duration * yd[at];
-      target[j] = scale[j] != 0.0 ? force / scale[j] : 0.0;
-    }
-    std::size_t first = 0;
-    std::size_t last = 0;
-    const double peak = std::exp(basis.evaluate(s, psi.data(), first, last));
-    for (std::size_t i = first; i < last; ++i)
-    {
-      const double weight = quadrature * peak * psi[i] * s;
-      denominator[i] += weight * s;
-      double* row = numerator.data() + i * n;
-      for (std::size_t j = 0; j < n; ++j)
-        row[j] += weight * target[j];
-    }
-  }
-  std::vector<std::vector<double>> weights(n, std::vector<double>(count, 0.0));
-  for (std::size_t i = 0; i < count; ++i)
-    if (denominator[i] > 0.0)
-      for (std::size_t j = 0; j < n; ++j)
-        weights[j][i] = numerator[i * n + j] / denominator[i];
-
-  DmpProvenance origin = provenance;
-  if (origin.created.empty())
-    origin.created = utcNow();
-  origin.samples = samples;
-  origin.demo_checksum = checksum(demo);
-  return Dmp(demo.joint_names, parameters, basis, std::move(weights), std::move(start), std::move(goal),
-             std::move(amplitude), std::move(scaling), duration, std::move(origin), std::move(warnings));
 }
 
 std::vector<std::string> Dmp::planWarnings(const RolloutRequest& request) const
@@ -353,9 +188,8 @@ void Dmp::integrate(DmpState& state) const
   state.phase = s_end;
 }
 
-vrrw_trajectory::JointTrajectory Dmp::rollout(const RolloutRequest& request) const
+std::size_t Dmp::nominalSteps(const RolloutRequest& request, double tau) const
 {
-  const double tau = request.tau > 0.0 ? request.tau : demo_duration_;
   if (!(request.dt > 0.0) || !std::isfinite(request.dt))
     throw DmpError("dt = " + format(request.dt) + ": must be a finite number > 0");
   if (request.tau < 0.0 || !std::isfinite(request.tau))
@@ -364,10 +198,23 @@ vrrw_trajectory::JointTrajectory Dmp::rollout(const RolloutRequest& request) con
     throw DmpError("rollout tolerances must be > 0");
   if (request.dt > tau)
     throw DmpError("dt = " + format(request.dt) + " is longer than tau = " + format(tau));
+  // in double first: tau / dt may be far beyond any integer type
+  const double steps = std::ceil(tau / request.dt - 1e-9);
+  if (kSettlingFactor * steps + 1.0 > static_cast<double>(kMaxRolloutSamples))
+    throw DmpError("tau = " + format(tau) + " s at dt = " + format(request.dt) + " s needs up to " +
+                   format(kSettlingFactor * steps + 1.0) + " samples (" + std::to_string(kSettlingFactor) +
+                   " tau / dt, settling included), more than the limit of " + std::to_string(kMaxRolloutSamples) +
+                   ": raise dt or shorten tau");
+  return static_cast<std::size_t>(steps);
+}
+
+vrrw_trajectory::JointTrajectory Dmp::rollout(const RolloutRequest& request) const
+{
+  const double tau = request.tau > 0.0 ? request.tau : demo_duration_;
+  const std::size_t nominal_steps = nominalSteps(request, tau);
   DmpState state = begin(request.start.empty() ? demo_start_ : request.start,
                          request.goal.empty() ? demo_goal_ : request.goal, tau);
-  const auto nominal_steps = static_cast<std::size_t>(std::ceil(tau / request.dt - 1e-9));
-  const std::size_t max_steps = 4 * nominal_steps;
+  const std::size_t max_steps = kSettlingFactor * nominal_steps;
   vrrw_trajectory::JointTrajectory trajectory;
   trajectory.joint_names = joint_names_;
   trajectory.points.reserve(nominal_steps + nominal_steps / 2 + 1);

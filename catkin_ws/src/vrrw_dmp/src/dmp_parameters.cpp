@@ -1,10 +1,11 @@
-#include "vrrw_dmp/dmp_parameters.h"
+#include <vrrw_dmp/dmp_parameters.h>
 
 #include <cmath>
 #include <cstdio>
 
+#include <vrrw_dmp/dmp_error.h>
+
 #include "format_number.h"
-#include "vrrw_dmp/dmp_error.h"
 
 namespace vrrw_dmp
 {
@@ -42,6 +43,9 @@ void DmpParameters::validate() const
 {
   if (basis_count == 0)
     throw DmpError("basis count N = 0: need at least one basis function");
+  if (basis_count > kMaxBasisCount)
+    throw DmpError("basis count N = " + std::to_string(basis_count) + ": more than the limit of " +
+                   std::to_string(kMaxBasisCount));
   if (!(alpha > 0.0) || !std::isfinite(alpha))
     throw DmpError("alpha = " + format(alpha) + ": must be a finite number > 0");
   if (!(K > 0.0) || !std::isfinite(K))

@@ -1,11 +1,13 @@
-#include "vrrw_dmp/dmp_yaml.h"
+#include <vrrw_dmp/dmp_yaml.h>
 
 #include <fstream>
 #include <sstream>
 
 #include <yaml-cpp/yaml.h>
 
-#include "vrrw_dmp/dmp_error.h"
+#include <vrrw_dmp/dmp_error.h>
+#include <vrrw_trajectory/trajectory_error.h>
+#include <vrrw_trajectory/whole_file.h>
 
 namespace vrrw_dmp
 {
@@ -149,8 +151,9 @@ Dmp parseModel(const std::string& text, const std::string& source)
   const YAML::Node p = read.child(root, "parameters", "");
   DmpParameters parameters;
   const auto count = read.scalar<long long>(p, "basis_count", "parameters.");
-  if (count <= 0)
-    read.fail("parameters.basis_count", std::to_string(count) + " must be > 0");
+  if (count <= 0 || count > static_cast<long long>(DmpParameters::kMaxBasisCount))
+    read.fail("parameters.basis_count", std::to_string(count) + " must be > 0 and at most the limit of " +
+                                            std::to_string(DmpParameters::kMaxBasisCount));
   parameters.basis_count = static_cast<std::size_t>(count);
   parameters.alpha = read.scalar<double>(p, "alpha", "parameters.");
   parameters.K = read.scalar<double>(p, "K", "parameters.");
@@ -233,13 +236,14 @@ Dmp fromYaml(const std::string& text, const std::string& source)
 
 void saveDmp(const Dmp& dmp, const std::string& path)
 {
-  std::ofstream out(path);
-  if (!out)
-    throw DmpError(path + ": cannot open for writing");
-  out << toYaml(dmp);
-  out.close();
-  if (!out)
-    throw DmpError(path + ": write failed");
+  try
+  {
+    vrrw_trajectory::writeWholeFile(path, toYaml(dmp));
+  }
+  catch (const vrrw_trajectory::TrajectoryError& e)
+  {
+    throw DmpError(e.what());
+  }
 }
 
 Dmp loadDmp(const std::string& path)

@@ -1,4 +1,4 @@
-#include "vrrw_dmp/gaussian_basis.h"
+#include <vrrw_dmp/gaussian_basis.h>
 
 #include <cmath>
 

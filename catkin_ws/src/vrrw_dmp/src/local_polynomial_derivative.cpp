@@ -1,10 +1,10 @@
-#include "vrrw_dmp/local_polynomial_derivative.h"
+#include <vrrw_dmp/local_polynomial_derivative.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "vrrw_dmp/dmp_error.h"
+#include <vrrw_dmp/dmp_error.h>
 
 namespace vrrw_dmp
 {

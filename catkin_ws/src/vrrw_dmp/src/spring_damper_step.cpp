@@ -1,4 +1,4 @@
-#include "vrrw_dmp/spring_damper_step.h"
+#include <vrrw_dmp/spring_damper_step.h>
 
 #include <cmath>
 

@@ -1,12 +1,29 @@
 #pragma once
 #include <cmath>
+#include <functional>
 #include <random>
+#include <string>
 #include <vector>
 
-#include "vrrw_trajectory/joint_trajectory.h"
+#include <vrrw_dmp/dmp_error.h>
+#include <vrrw_trajectory/joint_trajectory.h>
 
 namespace vrrw_dmp_test
 {
+/// The DmpError message \a action throws, or "no error".
+inline std::string errorOf(const std::function<void()>& action)
+{
+  try
+  {
+    action();
+  }
+  catch (const vrrw_dmp::DmpError& e)
+  {
+    return e.what();
+  }
+  return "no error";
+}
+
 /// A smooth 6-joint reach of duration T that starts and ends at rest (minimum jerk plus a bump).
 struct SmoothDemo
 {

@@ -4,15 +4,16 @@
 #include <cstdlib>
 #include <new>
 
+#include <vrrw_dmp/dmp.h>
+#include <vrrw_dmp/dmp_error.h>
+
 #include "demo_fixture.h"
-#include "vrrw_dmp/dmp.h"
-#include "vrrw_dmp/dmp_error.h"
 
 using vrrw_dmp::AmplitudeScaling;
 using vrrw_dmp::Dmp;
-using vrrw_dmp::DmpError;
 using vrrw_dmp::DmpParameters;
 using vrrw_dmp::RolloutRequest;
+using vrrw_dmp_test::errorOf;
 using vrrw_dmp_test::rmse;
 using vrrw_dmp_test::sample;
 using vrrw_dmp_test::SmoothDemo;
@@ -44,19 +45,6 @@ void operator delete(void* p, std::size_t) noexcept
 
 namespace
 {
-std::string errorOf(const std::function<void()>& action)
-{
-  try
-  {
-    action();
-  }
-  catch (const DmpError& e)
-  {
-    return e.what();
-  }
-  return "no error";
-}
-
 RolloutRequest fineRollout(double dt = 0.002)
 {
   RolloutRequest request;

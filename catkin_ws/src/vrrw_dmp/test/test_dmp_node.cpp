@@ -9,11 +9,12 @@
 #include <rosbag/bag.h>
 #include <sensor_msgs/JointState.h>
 
+#include <vrrw_dmp/Learn.h>
+#include <vrrw_dmp/Plan.h>
+#include <vrrw_dmp/dmp_yaml.h>
+#include <vrrw_trajectory/csv.h>
+
 #include "demo_fixture.h"
-#include "vrrw_dmp/Learn.h"
-#include "vrrw_dmp/Plan.h"
-#include "vrrw_dmp/dmp_yaml.h"
-#include "vrrw_trajectory/csv.h"
 
 using vrrw_dmp_test::SmoothDemo;
 
@@ -226,6 +227,19 @@ TEST_F(DmpNodeTest, BadRequestsAreAnsweredAndTheNodeStaysUp)
   vrrw_dmp::Plan::Request negative_tau;
   negative_tau.tau = -2.0;
   EXPECT_EQ(plan(negative_tau).message, "tau = -2: must be a finite number > 0");
+
+  // output that would not fit is refused before any work, and no model file is written
+  vrrw_dmp::Plan::Request endless;
+  endless.tau = 1e6;
+  const auto refused = plan(endless);
+  EXPECT_FALSE(refused.success);
+  EXPECT_NE(refused.message.find("more than the limit of 1000000: raise dt or shorten tau"), std::string::npos)
+      << refused.message;
+  vrrw_dmp::Learn::Request huge_basis = good;
+  huge_basis.basis_count = 1000000000;
+  huge_basis.model_path = temporary("huge.yaml");
+  EXPECT_EQ(learn(huge_basis).message, "basis count N = 1000000000: more than the limit of 10000");
+  EXPECT_FALSE(std::ifstream(huge_basis.model_path).good());
 
   EXPECT_TRUE(learn(good).success);
   EXPECT_TRUE(plan({}).success);

@@ -3,9 +3,10 @@
 #include <cstdio>
 #include <fstream>
 
+#include <vrrw_dmp/dmp_error.h>
+#include <vrrw_dmp/dmp_yaml.h>
+
 #include "demo_fixture.h"
-#include "vrrw_dmp/dmp_error.h"
-#include "vrrw_dmp/dmp_yaml.h"
 
 using vrrw_dmp::Dmp;
 using vrrw_dmp::DmpError;
@@ -90,7 +91,7 @@ TEST(DmpYaml, BadModelFilesNameTheField)
             "model.yaml: format: 'other/2' is not 'vrrw_dmp/1'");
   EXPECT_EQ(errorOf(replaced(good, "  K: 120", "  K: -120")), "model.yaml: K = -120: must be a finite number > 0");
   EXPECT_EQ(errorOf(replaced(good, "  basis_count: 40", "  basis_count: 0")),
-            "model.yaml: parameters.basis_count: 0 must be > 0");
+            "model.yaml: parameters.basis_count: 0 must be > 0 and at most the limit of 10000");
   EXPECT_EQ(errorOf(replaced(good, "  basis_count: 40", "  basis_count: 41")),
             "model.yaml: model: 40 basis centres/40 widths for N = 41");
   EXPECT_EQ(errorOf(replaced(good, "  alpha: 4", "  alpha: fast")), "model.yaml: parameters.alpha: is not a number");

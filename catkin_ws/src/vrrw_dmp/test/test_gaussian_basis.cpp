@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "vrrw_dmp/gaussian_basis.h"
+#include <vrrw_dmp/gaussian_basis.h>
 
 using vrrw_dmp::GaussianBasis;
 

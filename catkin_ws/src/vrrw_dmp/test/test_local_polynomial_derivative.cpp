@@ -3,8 +3,8 @@
 #include <cmath>
 #include <random>
 
-#include "vrrw_dmp/dmp_error.h"
-#include "vrrw_dmp/local_polynomial_derivative.h"
+#include <vrrw_dmp/dmp_error.h>
+#include <vrrw_dmp/local_polynomial_derivative.h>
 
 using vrrw_dmp::LocalPolynomialDerivative;
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "../src/cli/options.h"
+#include "options.h"
 
 using vrrw_dmp::OptionError;
 using vrrw_dmp::Options;

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "vrrw_dmp/spring_damper_step.h"
+#include <vrrw_dmp/spring_damper_step.h>
 
 namespace
 {

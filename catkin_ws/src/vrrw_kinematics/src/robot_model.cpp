@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "vrrw_kinematics/kinematics_error.h"
+#include "vrrw_scene/mesh_path.h"
 
 namespace vrrw_kinematics
 {
@@ -23,12 +24,6 @@ Eigen::Isometry3d toEigen(const urdf::Pose& pose)
                    .normalized()
                    .toRotationMatrix();
   return t;
-}
-
-bool fileExists(const std::string& path)
-{
-  std::ifstream f(path);
-  return f.good();
 }
 
 bool toShape(const urdf::Collision& collision, vrrw_scene::Shape& shape)
@@ -63,7 +58,7 @@ bool toShape(const urdf::Collision& collision, vrrw_scene::Shape& shape)
     {
       const auto& mesh = static_cast<const urdf::Mesh&>(*collision.geometry);
       shape.type = vrrw_scene::Shape::Type::Mesh;
-      shape.mesh_path = resolveMeshPath(mesh.filename);
+      shape.mesh_path = vrrw_scene::resolveMeshPath(mesh.filename);
       shape.mesh_scale = Eigen::Vector3d(mesh.scale.x, mesh.scale.y, mesh.scale.z);
       return !shape.mesh_path.empty();
     }
@@ -103,31 +98,6 @@ Eigen::Isometry3d JointModel::transform(double q) const
     case Type::Fixed: break;
   }
   return origin;
-}
-
-std::string resolveMeshPath(const std::string& uri)
-{
-  const std::string file_prefix = "file://";
-  const std::string package_prefix = "package://";
-  if (uri.compare(0, file_prefix.size(), file_prefix) == 0)
-    return fileExists(uri.substr(file_prefix.size())) ? uri.substr(file_prefix.size()) : "";
-  if (uri.compare(0, package_prefix.size(), package_prefix) != 0)
-    return fileExists(uri) ? uri : "";
-  const std::string rest = uri.substr(package_prefix.size());
-  const std::size_t slash = rest.find('/');
-  if (slash == std::string::npos)
-    return "";
-  const std::string package = rest.substr(0, slash);
-  const char* env = std::getenv("ROS_PACKAGE_PATH");
-  std::stringstream paths(env ? env : "");
-  std::string root;
-  while (std::getline(paths, root, ':'))
-  {
-    for (const std::string& dir : { root + "/" + package, root + "/src/" + package })
-      if (fileExists(dir + "/package.xml") && fileExists(dir + rest.substr(slash)))
-        return dir + rest.substr(slash);
-  }
-  return "";
 }
 
 RobotModel RobotModel::fromUrdf(const std::string& urdf_xml)

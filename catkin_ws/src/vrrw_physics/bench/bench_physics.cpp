@@ -1,79 +1,120 @@
-// vrrw_bench_physics --scene NAME [--seconds 10] [--dt 0.001] [--mode rigid] [--drives constraint|stable_pd]
-// Steps a scene as fast as possible on one thread, every robot holding its initial pose against
-// gravity; reports steps_per_s, real-time factor (wall clock, and CPU time of this process: the
-// machine is shared) and the largest hold error. Last line: JSON.
+// vrrw_bench_physics: steps a scene as fast as possible on one thread, every robot holding its initial pose
+// against gravity; reports steps_per_s, real-time factor (wall clock, and CPU time of this process: the
+// machine is shared) and the largest hold error. Last line: JSON. --help for the options.
 #include <vrrw_physics/physics_world.h>
 #include <vrrw_scene/scene_loader.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <iostream>
 #include <string>
 
-int main(int argc, char** argv)
+namespace
 {
-  std::string scene_name = "paper_multibot";
+const char* kUsage = R"(usage: vrrw_bench_physics [OPTIONS]   (./vrrw bench physics [OPTIONS])
+Steps a scene on one thread as fast as it can, every robot holding its initial pose; prints the speed
+(steps per second, real-time factor by wall clock and by CPU time) and the largest hold error. The last
+line is JSON.
+  --scene NAME|YAML       shipped scene or scene file (default paper_multibot)
+  --seconds S             simulated seconds (default 10)
+  --dt DT                 step (s, default 0.001)
+  --mode rigid|compliant  drive mode of every arm (default rigid)
+  --drives constraint|stable_pd   drive scheme (default constraint)
+  --iterations N          most solver sweeps per step (default 30)
+  --inner N               joint-row sweeps per sweep while a robot touches something (default 5)
+  --residual R            solver stop threshold (default 1e-9)
+  --help                  this text
+)";
+
+struct Settings
+{
+  std::string scene = "paper_multibot";
   double seconds = 10.0;
   vrrw_physics::WorldOptions options;
-  std::string mode = "rigid";
+};
+
+/// Reads the command line into `s`; returns an exit code (0: run, -1: --help shown).
+int parse(int argc, char** argv, Settings& s)
+{
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h")
+    {
+      std::cout << kUsage;
+      return -1;
+    }
     if (i + 1 >= argc)
     {
-      std::cerr << "vrrw_bench_physics: " << arg << ": missing value\n";
+      std::cerr << "vrrw_bench_physics: " << arg << ": missing value (--help lists the options)\n";
       return 2;
     }
     const std::string value = argv[++i];
     try
     {
       if (arg == "--scene")
-        scene_name = value;
+        s.scene = value;
       else if (arg == "--seconds")
-        seconds = std::stod(value);
+        s.seconds = std::stod(value);
       else if (arg == "--dt")
-        options.dt = std::stod(value);
+        s.options.dt = std::stod(value);
       else if (arg == "--mode")
-        mode = value;
+        s.options.mode = vrrw_physics::parseDriveMode(value);
       else if (arg == "--iterations")
-        options.solver_iterations = std::stoi(value);
+        s.options.solver_iterations = std::stoi(value);
       else if (arg == "--inner")
-        options.solver_inner_iterations = std::stoi(value);
+        s.options.solver_inner_iterations = std::stoi(value);
       else if (arg == "--residual")
-        options.solver_residual = std::stod(value);
-      else if (arg == "--drives" && (value == "constraint" || value == "stable_pd"))
-        options.drive_scheme =
-            value == "constraint" ? vrrw_physics::DriveScheme::Constraint : vrrw_physics::DriveScheme::StablePd;
+        s.options.solver_residual = std::stod(value);
+      else if (arg == "--drives")
+        s.options.drive_scheme = vrrw_physics::parseDriveScheme(value);
       else
       {
-        std::cerr << "vrrw_bench_physics: unknown option " << arg
-                  << " (--scene NAME --seconds S --dt DT --mode rigid|compliant --iterations N "
-                     "--inner N --residual R --drives constraint|stable_pd)\n";
+        std::cerr << "vrrw_bench_physics: unknown option " << arg << " (--help lists the options)\n";
         return 2;
       }
     }
-    catch (const std::exception&)
+    catch (const std::exception& e)
     {
-      std::cerr << "vrrw_bench_physics: " << arg << ": not a number: " << value << "\n";
+      std::cerr << "vrrw_bench_physics: " << arg << " " << value << ": " << e.what() << "\n";
       return 2;
     }
   }
+  if (!(s.seconds > 0.0) || !(s.seconds <= 3600.0))
+  {
+    std::cerr << "vrrw_bench_physics: --seconds " << s.seconds << ": outside (0, 3600]\n";
+    return 2;
+  }
+  return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  Settings settings;
+  const int parsed = parse(argc, argv, settings);
+  if (parsed != 0)
+    return parsed < 0 ? 0 : parsed;
+  const vrrw_physics::WorldOptions& options = settings.options;
+  // Progress rewrites one line on a terminal; in a captured log every report is a line of its own.
+  const char* progress_end = isatty(STDERR_FILENO) ? "\r" : "\n";
   try
   {
-    const vrrw_scene::Scene scene = vrrw_scene::loadScene(scene_name);
+    const vrrw_scene::Scene scene = vrrw_scene::loadScene(settings.scene);
     vrrw_physics::PhysicsWorld world(scene, options);
     int dofs = 0;
     std::vector<std::vector<double>> hold;
     for (const std::string& robot : world.robotNames())
     {
-      world.setMode(robot, vrrw_physics::parseDriveMode(mode));
       hold.push_back(world.jointStates(robot).position);
       dofs += int(hold.back().size());
     }
-    const long steps = std::lround(seconds / options.dt);
+    const long steps = std::lround(settings.seconds / options.dt);
     int rejected = 0;
     const std::clock_t cpu_start = std::clock();
     const auto start = std::chrono::steady_clock::now();
@@ -82,7 +123,7 @@ int main(int argc, char** argv)
       if (!world.step())
         ++rejected;
       if ((i + 1) % 2000 == 0)
-        std::cerr << "t=" << world.time() << " s\r";
+        std::cerr << "t=" << world.time() << " s" << progress_end;
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
@@ -96,16 +137,16 @@ int main(int argc, char** argv)
         if (joints[j].drive >= 0)
           max_error = std::max(max_error, std::abs(state.position[j] - hold[r][j]));
     }
-    std::cerr << "\n";
-    std::printf("{\"bench\": \"physics\", \"scene\": \"%s\", \"mode\": \"%s\", \"drives\": \"%s\", \"dt\": %g, \"sim_seconds\": %g, "
-                "\"robots\": %zu, \"objects\": %zu, \"dofs\": %d, \"solver_iterations\": %d, \"steps\": %ld, "
-                "\"wall_seconds\": %.3f, \"cpu_seconds\": %.3f, \"steps_per_s\": %.1f, \"rtf\": %.2f, \"rtf_cpu\": %.2f, "
-                "\"max_hold_error_rad\": %.3g, "
-                "\"guard_rejections\": %d}\n",
-                scene.name.c_str(), mode.c_str(),
-                options.drive_scheme == vrrw_physics::DriveScheme::Constraint ? "constraint" : "stable_pd", options.dt, world.time(), names.size(), world.objectNames().size(),
-                dofs, options.solver_iterations, steps, wall, cpu, steps / wall, world.time() / wall, world.time() / cpu, max_error,
-                rejected);
+    if (isatty(STDERR_FILENO))
+      std::cerr << "\n";
+    std::printf("{\"bench\": \"physics\", \"scene\": \"%s\", \"mode\": \"%s\", \"drives\": \"%s\", \"dt\": %g, "
+                "\"sim_seconds\": %g, \"robots\": %zu, \"objects\": %zu, \"dofs\": %d, \"solver_iterations\": %d, "
+                "\"steps\": %ld, \"wall_seconds\": %.3f, \"cpu_seconds\": %.3f, \"steps_per_s\": %.1f, \"rtf\": %.2f, "
+                "\"rtf_cpu\": %.2f, \"max_hold_error_rad\": %.3g, \"guard_rejections\": %d}\n",
+                scene.name.c_str(), vrrw_physics::toString(options.mode),
+                options.drive_scheme == vrrw_physics::DriveScheme::Constraint ? "constraint" : "stable_pd", options.dt,
+                world.time(), names.size(), world.objectNames().size(), dofs, options.solver_iterations, steps, wall,
+                cpu, steps / wall, world.time() / wall, world.time() / cpu, max_error, rejected);
     return 0;
   }
   catch (const std::exception& e)

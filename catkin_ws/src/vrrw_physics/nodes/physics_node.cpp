@@ -1,197 +1,163 @@
 // physics_node: steps a vrrw_physics::PhysicsWorld of the scene in ~scene and wires it to ROS.
 //   publishes  /<robot>/joint_states, /joint_states (all robots), tf world -> <object>, /clock
-//              (~publish_clock), ~errors (std_msgs/String: rejected input, guard trips)
-//   subscribes /<robot>/drive_targets (sensor_msgs/JointState: name, position, optional velocity),
-//              ~hand_pose (geometry_msgs/PoseStamped: the kinematic hand),
-//              ~spring_target (vrrw_physics/SpringTarget: moves an attached operator spring)
+//              (~publish_clock), ~contacts (vrrw_physics/Contacts), ~errors (std_msgs/String, latched:
+//              rejected input, guard trips, robots whose targets stopped, hands removed)
+//   subscribes /<robot>/drive_targets (sensor_msgs/JointState: name, position, optional velocity and effort),
+//              ~hand (vrrw_physics/Hand), ~spring_target (vrrw_physics/SpringTarget)
 //   services   ~pause ~resume ~step ~reset (std_srvs/Trigger), ~set_mode, ~set_gains, ~set_spring,
 //              ~set_object_pose (vrrw_physics/*)
-#include <vrrw_physics/physics_world.h>
+#include <vrrw_physics/Hand.h>
 #include <vrrw_physics/SetGains.h>
 #include <vrrw_physics/SetMode.h>
 #include <vrrw_physics/SetObjectPose.h>
-#include <vrrw_physics/SetSpring.h>
 #include <vrrw_physics/SpringTarget.h>
+#include <vrrw_physics/realtime_pacer.h>
+#include <vrrw_physics/report_throttle.h>
 #include <vrrw_scene/scene_loader.h>
 
-#include <geometry_msgs/PoseStamped.h>
-#include <geometry_msgs/TransformStamped.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
-#include <sensor_msgs/JointState.h>
 #include <std_msgs/String.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include <functional>
-#include <memory>
+
+#include "physics_messages.h"
 
 namespace
 {
 using vrrw_physics::PhysicsWorld;
-
-Eigen::Isometry3d toEigen(const geometry_msgs::Pose& p)
-{
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.translate(Eigen::Vector3d(p.position.x, p.position.y, p.position.z));
-  const Eigen::Quaterniond q(p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z);
-  if (q.norm() < 1e-9)
-    throw vrrw_physics::InputError("pose: orientation quaternion is zero");
-  t.rotate(q.normalized());
-  return t;
-}
+using vrrw_physics::toEigen;
 
 class PhysicsNode
 {
 public:
   PhysicsNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const vrrw_scene::Scene& scene,
-              const vrrw_physics::WorldOptions& options)
-    : world_(scene, options)
+              const vrrw_physics::WorldOptions& options, double publish_rate)
+    : world_(scene, options), publish_every_(std::max(1, int(std::lround(1.0 / (publish_rate * options.dt)))))
   {
     pnh.param("realtime", realtime_, true);
     pnh.param("publish_clock", publish_clock_, false);
     pnh.param("paused", paused_, false);
-    double rate = 100.0;
-    pnh.param("publish_rate", rate, 100.0);
-    publish_every_ = std::max(1, int(std::lround(1.0 / (rate * options.dt))));
-    std::string mode;
-    pnh.param<std::string>("mode", mode, "rigid");
     for (const std::string& robot : world_.robotNames())
     {
-      world_.setMode(robot, vrrw_physics::parseDriveMode(mode));
       robot_states_.push_back(nh.advertise<sensor_msgs::JointState>(robot + "/joint_states", 10));
-      targets_.push_back(nh.subscribe<sensor_msgs::JointState>(
-          robot + "/drive_targets", 10, [this, robot](const sensor_msgs::JointStateConstPtr& msg) { onTargets(robot, *msg); }));
+      subscribers_.push_back(nh.subscribe<sensor_msgs::JointState>(
+          robot + "/drive_targets", 10, [this, robot](const sensor_msgs::JointStateConstPtr& m) {
+            guarded("/" + robot + "/drive_targets",
+                    [&] { world_.setDriveTargets(robot, m->name, m->position, m->velocity, m->effort); });
+          }));
     }
     all_states_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+    contacts_ = pnh.advertise<vrrw_physics::Contacts>("contacts", 10);
     errors_ = pnh.advertise<std_msgs::String>("errors", 10, true);
     if (publish_clock_)
       clock_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
-    hand_ = pnh.subscribe<geometry_msgs::PoseStamped>("hand_pose", 10, [this](const geometry_msgs::PoseStampedConstPtr& msg) {
-      guarded("hand_pose", [&] { world_.setHandPose(toEigen(msg->pose)); });
+    subscribers_.push_back(pnh.subscribe<vrrw_physics::Hand>("hand", 100, [this](const vrrw_physics::HandConstPtr& m) {
+      guarded("hand", [&] { world_.operatorInput().setHand(m->id, toEigen(m->pose), m->radius); });
+    }));
+    subscribers_.push_back(pnh.subscribe<vrrw_physics::SpringTarget>(
+        "spring_target", 10, [this](const vrrw_physics::SpringTargetConstPtr& m) {
+          guarded("spring_target",
+                  [&] { world_.operatorInput().moveSpring(m->id, toEigen(m->target), toEigen(m->velocity)); });
+        }));
+    trigger(pnh, "pause", [this] { paused_ = true; });
+    trigger(pnh, "resume", [this] { paused_ = false; });
+    trigger(pnh, "step", [this] {
+      if (!paused_)
+        throw vrrw_physics::InputError("pause the simulation first");
+      advance();
+      publish();
     });
-    spring_target_ = pnh.subscribe<vrrw_physics::SpringTarget>(
-        "spring_target", 10, [this](const vrrw_physics::SpringTargetConstPtr& msg) {
-          guarded("spring_target", [&] {
-            world_.moveSpring(msg->id, toEigen(msg->target), Eigen::Vector3d(msg->velocity.x, msg->velocity.y, msg->velocity.z));
-          });
-        });
-    services_.push_back(pnh.advertiseService("pause", &PhysicsNode::onPause, this));
-    services_.push_back(pnh.advertiseService("resume", &PhysicsNode::onResume, this));
-    services_.push_back(pnh.advertiseService("step", &PhysicsNode::onStep, this));
-    services_.push_back(pnh.advertiseService("reset", &PhysicsNode::onReset, this));
-    services_.push_back(pnh.advertiseService("set_mode", &PhysicsNode::onSetMode, this));
-    services_.push_back(pnh.advertiseService("set_gains", &PhysicsNode::onSetGains, this));
-    services_.push_back(pnh.advertiseService("set_spring", &PhysicsNode::onSetSpring, this));
-    services_.push_back(pnh.advertiseService("set_object_pose", &PhysicsNode::onSetObjectPose, this));
+    trigger(pnh, "reset", [this] {
+      world_.reset();
+      publish();
+    });
+    service<vrrw_physics::SetMode>(pnh, "set_mode", [this](auto& req) {
+      world_.setMode(req.robot, vrrw_physics::parseDriveMode(req.mode));
+    });
+    service<vrrw_physics::SetGains>(pnh, "set_gains", [this](auto& req) {
+      world_.setGains(req.robot, req.joints, req.stiffness, req.damping, req.max_force);
+    });
+    service<vrrw_physics::SetSpring>(pnh, "set_spring", [this](auto& req) {
+      if (req.release)
+        world_.operatorInput().releaseSpring(req.id);
+      else
+        world_.operatorInput().attachSpring(req.id, vrrw_physics::toSpring(req));
+    });
+    service<vrrw_physics::SetObjectPose>(pnh, "set_object_pose",
+                                         [this](auto& req) { world_.setObjectPose(req.object, toEigen(req.pose)); });
   }
 
   void run()
   {
-    ros::WallTime start = ros::WallTime::now();
-    double started_at = world_.time();
     publish();
+    pacer_.restart(world_.time());
     while (ros::ok())
     {
       ros::spinOnce();
-      if (paused_)
+      if (paused_ || world_.stopped())
       {
         ros::WallDuration(0.005).sleep();
-        start = ros::WallTime::now();
-        started_at = world_.time();
+        pacer_.restart(world_.time());
         continue;
       }
       advance();
       if (realtime_)
-      {
-        const ros::WallTime due = start + ros::WallDuration(world_.time() - started_at);
-        const ros::WallTime now = ros::WallTime::now();
-        if (due > now)
-          (due - now).sleep();
-        else if ((now - due).toSec() > 0.1)
-        {
-          start = now;  // fell behind by more than 100 ms: do not try to catch up
-          started_at = world_.time();
-        }
-      }
+        ros::WallDuration(pacer_.wait(world_.time())).sleep();
     }
   }
 
 private:
   void advance()
   {
-    if (!world_.step())
-      report(world_.lastError());
-    ++steps_;
+    world_.step();
+    for (const std::string& line : world_.takeReports())
+      report("world", line, world_.stopped());
     if (publish_clock_)
     {
       rosgraph_msgs::Clock clock;
       clock.clock = ros::Time(world_.time());
       clock_.publish(clock);
     }
-    if (steps_ % std::uint64_t(publish_every_) == 0)
+    if (world_.steps() % std::uint64_t(publish_every_) == 0)
       publish();
-  }
-
-  ros::Time stamp() const
-  {
-    return publish_clock_ ? ros::Time(world_.time()) : ros::Time::now();
   }
 
   void publish()
   {
-    const ros::Time now = stamp();
+    const ros::Time now = publish_clock_ ? ros::Time(world_.time()) : ros::Time::now();
     sensor_msgs::JointState all;
     all.header.stamp = now;
     const auto robots = world_.robotNames();
     for (std::size_t r = 0; r < robots.size(); ++r)
     {
-      const vrrw_physics::JointStates s = world_.jointStates(robots[r]);
-      sensor_msgs::JointState msg;
-      msg.header.stamp = now;
-      msg.name = s.name;
-      msg.position = s.position;
-      msg.velocity = s.velocity;
-      msg.effort = s.effort;
+      const sensor_msgs::JointState msg = vrrw_physics::toMsg(world_.jointStates(robots[r]), now);
       robot_states_[r].publish(msg);
-      all.name.insert(all.name.end(), s.name.begin(), s.name.end());
-      all.position.insert(all.position.end(), s.position.begin(), s.position.end());
-      all.velocity.insert(all.velocity.end(), s.velocity.begin(), s.velocity.end());
-      all.effort.insert(all.effort.end(), s.effort.begin(), s.effort.end());
+      vrrw_physics::append(msg, all);
     }
     all_states_.publish(all);
     std::vector<geometry_msgs::TransformStamped> frames;
     for (const std::string& object : world_.objectNames())
-    {
-      const Eigen::Isometry3d pose = world_.objectPose(object);
-      const Eigen::Quaterniond q(pose.rotation());
-      geometry_msgs::TransformStamped t;
-      t.header.stamp = now;
-      t.header.frame_id = "world";
-      t.child_frame_id = object;
-      t.transform.translation.x = pose.translation().x();
-      t.transform.translation.y = pose.translation().y();
-      t.transform.translation.z = pose.translation().z();
-      t.transform.rotation.w = q.w();
-      t.transform.rotation.x = q.x();
-      t.transform.rotation.y = q.y();
-      t.transform.rotation.z = q.z();
-      frames.push_back(t);
-    }
+      frames.push_back(vrrw_physics::toTransform(world_.objectPose(object), object, now));
     if (!frames.empty())
       tf_.sendTransform(frames);
+    contacts_.publish(vrrw_physics::toMsg(world_.contacts(), now));
   }
 
-  void report(const std::string& message)
+  /// One line per `source` per second at most (ReportThrottle), unless `always`.
+  void report(const std::string& source, const std::string& message, bool always = false)
   {
-    ROS_ERROR_STREAM_THROTTLE(1.0, message);
     std_msgs::String msg;
-    msg.data = message;
-    errors_.publish(msg);
+    msg.data = always ? message : throttle_.admit(source, message, ros::WallTime::now().toSec());
+    if (!msg.data.empty())
+      errors_.publish(msg);
+    ROS_ERROR_STREAM_COND(!msg.data.empty(), msg.data);
   }
 
   /// Runs `call`; an InputError (or a bad mode) becomes one error line; returns the message or "".
-  std::string guarded(const std::string& what, const std::function<void()>& call)
+  std::string guarded(const std::string& source, const std::function<void()>& call)
   {
     try
     {
@@ -200,102 +166,55 @@ private:
     }
     catch (const std::invalid_argument& e)
     {
-      const std::string message = what + ": " + e.what();
-      report(message);
+      const std::string message = source + ": " + e.what();
+      report(source, message);
       return message;
     }
   }
 
-  template <class Response>
-  bool answer(Response& res, const std::string& error)
+  template <class Srv, class Call>
+  void service(ros::NodeHandle& pnh, const std::string& name, Call call)
   {
-    res.success = error.empty();
-    res.message = error.empty() ? "ok" : error;
-    return true;
+    services_.push_back(pnh.advertiseService<typename Srv::Request, typename Srv::Response>(
+        name, [this, name, call](typename Srv::Request& req, typename Srv::Response& res) {
+          const std::string error = guarded(name, [&] { call(req); });
+          res.success = error.empty();
+          res.message = error.empty() ? "ok" : error;
+          return true;
+        }));
   }
 
-  void onTargets(const std::string& robot, const sensor_msgs::JointState& msg)
+  void trigger(ros::NodeHandle& pnh, const std::string& name, const std::function<void()>& call)
   {
-    guarded("/" + robot + "/drive_targets", [&] { world_.setDriveTargets(robot, msg.name, msg.position, msg.velocity); });
-  }
-
-  bool onPause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res)
-  {
-    paused_ = true;
-    return answer(res, "");
-  }
-
-  bool onResume(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res)
-  {
-    paused_ = false;
-    return answer(res, "");
-  }
-
-  bool onStep(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res)
-  {
-    if (!paused_)
-      return answer(res, "step: pause the simulation first");
-    advance();
-    publish();
-    return answer(res, "");
-  }
-
-  bool onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res)
-  {
-    world_.reset();
-    publish();
-    return answer(res, "");
-  }
-
-  bool onSetMode(vrrw_physics::SetMode::Request& req, vrrw_physics::SetMode::Response& res)
-  {
-    return answer(res, guarded("set_mode", [&] { world_.setMode(req.robot, vrrw_physics::parseDriveMode(req.mode)); }));
-  }
-
-  bool onSetGains(vrrw_physics::SetGains::Request& req, vrrw_physics::SetGains::Response& res)
-  {
-    return answer(res, guarded("set_gains", [&] {
-                    world_.setGains(req.robot, req.joints, req.stiffness, req.damping, req.max_force);
-                  }));
-  }
-
-  bool onSetSpring(vrrw_physics::SetSpring::Request& req, vrrw_physics::SetSpring::Response& res)
-  {
-    return answer(res, guarded("set_spring", [&] {
-                    if (req.release)
-                      return world_.releaseSpring(req.id);
-                    vrrw_physics::OperatorSpring spring;
-                    spring.body = req.body;
-                    spring.point = Eigen::Vector3d(req.point.x, req.point.y, req.point.z);
-                    spring.target = toEigen(req.target);
-                    spring.stiffness = req.stiffness;
-                    spring.damping = req.damping;
-                    spring.angular_stiffness = req.angular_stiffness;
-                    spring.angular_damping = req.angular_damping;
-                    if (req.max_force > 0.0)
-                      spring.max_force = req.max_force;
-                    world_.attachSpring(req.id, spring);
-                  }));
-  }
-
-  bool onSetObjectPose(vrrw_physics::SetObjectPose::Request& req, vrrw_physics::SetObjectPose::Response& res)
-  {
-    return answer(res, guarded("set_object_pose", [&] { world_.setObjectPose(req.object, toEigen(req.pose)); }));
+    service<std_srvs::Trigger>(pnh, name, [call](auto&) { call(); });
   }
 
   PhysicsWorld world_;
+  int publish_every_;
   bool realtime_ = true;
   bool publish_clock_ = false;
   bool paused_ = false;
-  int publish_every_ = 10;
-  std::uint64_t steps_ = 0;
+  vrrw_physics::RealtimePacer pacer_;
+  vrrw_physics::ReportThrottle throttle_;
   std::vector<ros::Publisher> robot_states_;
-  std::vector<ros::Subscriber> targets_;
-  ros::Publisher all_states_, errors_, clock_;
-  ros::Subscriber hand_, spring_target_;
+  std::vector<ros::Subscriber> subscribers_;
+  ros::Publisher all_states_, contacts_, errors_, clock_;
   std::vector<ros::ServiceServer> services_;
   tf2_ros::TransformBroadcaster tf_;
 };
+
+vrrw_physics::WorldOptions readOptions(ros::NodeHandle& pnh)
+{
+  vrrw_physics::WorldOptions options;
+  pnh.param("dt", options.dt, options.dt);
+  pnh.param("solver_iterations", options.solver_iterations, options.solver_iterations);
+  pnh.param("gravity_compensation", options.gravity_compensation, options.gravity_compensation);
+  pnh.param("target_timeout", options.target_timeout, options.target_timeout);
+  pnh.param("hand_timeout", options.hand_timeout, options.hand_timeout);
+  options.mode = vrrw_physics::parseDriveMode(pnh.param<std::string>("mode", "rigid"));
+  options.drive_scheme = vrrw_physics::parseDriveScheme(pnh.param<std::string>("drives", "constraint"));
+  return options;
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -308,18 +227,14 @@ int main(int argc, char** argv)
     ROS_FATAL("physics_node: ~scene: missing (a shipped scene name or a scene YAML path)");
     return 2;
   }
-  vrrw_physics::WorldOptions options;
-  pnh.param("dt", options.dt, options.dt);
-  pnh.param("solver_iterations", options.solver_iterations, options.solver_iterations);
-  pnh.param("gravity_compensation", options.gravity_compensation, options.gravity_compensation);
-  std::string scheme;
-  pnh.param<std::string>("drives", scheme, "constraint");
-  options.drive_scheme =
-      scheme == "stable_pd" ? vrrw_physics::DriveScheme::StablePd : vrrw_physics::DriveScheme::Constraint;
   try
   {
+    const vrrw_physics::WorldOptions options = readOptions(pnh);
+    const double publish_rate = pnh.param("publish_rate", 100.0);
+    if (!(publish_rate > 0.0))
+      throw std::invalid_argument("~publish_rate: must be > 0 Hz");
     const vrrw_scene::Scene scene = vrrw_scene::loadScene(scene_name);
-    PhysicsNode node(nh, pnh, scene, options);
+    PhysicsNode node(nh, pnh, scene, options, publish_rate);
     ROS_INFO_STREAM("physics_node: scene " << scene.name << ", " << scene.robots.size() << " robots, "
                                            << scene.objects.size() << " objects, dt " << options.dt << " s");
     node.run();

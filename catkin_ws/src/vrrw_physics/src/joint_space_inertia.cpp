@@ -1,4 +1,3 @@
-#include <vrrw_physics/articulated_robot.h>
 #include <vrrw_physics/joint_space_inertia.h>
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
@@ -7,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <Eigen/Geometry>
+
+#include "bullet_conversions.h"
 
 namespace vrrw_physics
 {
@@ -17,11 +18,6 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v)
   Eigen::Matrix3d s;
   s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
   return s;
-}
-
-Eigen::Vector3d toEigen(const btVector3& v)
-{
-  return Eigen::Vector3d(v.x(), v.y(), v.z());
 }
 
 /// Inverse of a symmetric positive-definite matrix by Cholesky, M = L L', M^-1 = L^-T L^-1.
@@ -90,7 +86,7 @@ JointMatrix invertSpd(const JointMatrix& m)
 }
 }  // namespace
 
-JointMatrix jointSpaceInertia(const ArticulatedRobot& robot)
+JointMatrix jointSpaceInertia(const btMultiBody& body, const std::vector<Eigen::Isometry3d>& frames)
 {
   // Spatial inertias about the world origin, kept as mass m, first moment h = m c and rotational
   // inertia about the origin I_O = I_c - m [c]x^2; a motion (w, v_O) meets the momentum
@@ -103,14 +99,13 @@ JointMatrix jointSpaceInertia(const ArticulatedRobot& robot)
     Eigen::Vector3d moment;
     Eigen::Matrix3d rotational;
   };
-  const btMultiBody& body = *robot.body();
   const std::size_t n_links = static_cast<std::size_t>(body.getNumLinks());
   Composite composite[kMaxJoints];
   Eigen::Vector3d angular[kMaxJoints], linear[kMaxJoints];
   for (std::size_t k = 0; k < n_links; ++k)
   {
     const int link = int(k);
-    const Eigen::Isometry3d& pose = robot.bodyPose(link);
+    const Eigen::Isometry3d& pose = frames[k + 1];
     const Eigen::Matrix3d r = pose.rotation();
     const Eigen::Vector3d c = pose.translation();
     const double m = body.getLinkMass(link);
@@ -140,29 +135,18 @@ JointMatrix jointSpaceInertia(const ArticulatedRobot& robot)
     p.moment += composite[k].moment;
     p.rotational += composite[k].rotational;
   }
-  const auto& joints = robot.joints();
-  int joint_of_link[kMaxJoints];
-  std::fill(joint_of_link, joint_of_link + n_links, -1);
-  for (std::size_t j = 0; j < joints.size(); ++j)
-    joint_of_link[std::size_t(joints[j].link)] = int(j);
-  const Eigen::Index n = Eigen::Index(joints.size());
+  const Eigen::Index n = Eigen::Index(n_links);
   JointMatrix m = JointMatrix::Zero(n, n);
   for (std::size_t k = 0; k < n_links; ++k)
   {
-    const int j = joint_of_link[k];
-    if (j < 0)
-      continue;
     const Composite& ic = composite[k];
     const Eigen::Vector3d torque = ic.rotational * angular[k] + ic.moment.cross(linear[k]);
     const Eigen::Vector3d force = ic.mass * linear[k] - ic.moment.cross(angular[k]);
     for (int a = int(k); a >= 0; a = body.getParent(a))
     {
-      const int i = joint_of_link[std::size_t(a)];
-      if (i < 0)
-        continue;
       const double value = angular[std::size_t(a)].dot(torque) + linear[std::size_t(a)].dot(force);
-      m(i, j) = value;
-      m(j, i) = value;
+      m(a, Eigen::Index(k)) = value;
+      m(Eigen::Index(k), a) = value;
     }
   }
   return m;

@@ -1,27 +1,19 @@
-#include <vrrw_physics/mesh_shape.h>
+#include "mesh_shape.h"
 
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/CollisionShapes/btShapeHull.h>
 
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <sys/stat.h>
 #include <vector>
 
 namespace vrrw_physics
 {
 namespace
 {
-bool fileExists(const std::string& path)
-{
-  struct stat info;
-  return stat(path.c_str(), &info) == 0;
-}
-
 std::vector<btVector3> readStl(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -84,28 +76,6 @@ std::string lowerExtension(const std::string& path)
   return ext;
 }
 }  // namespace
-
-std::string resolveMeshPath(const std::string& uri)
-{
-  const std::string file_prefix = "file://";
-  const std::string package_prefix = "package://";
-  if (uri.compare(0, file_prefix.size(), file_prefix) == 0)
-    return uri.substr(file_prefix.size());
-  if (uri.compare(0, package_prefix.size(), package_prefix) != 0)
-    return uri;
-  const std::string rest = uri.substr(package_prefix.size());
-  const auto slash = rest.find('/');
-  const std::string package = rest.substr(0, slash);
-  const std::string relative = slash == std::string::npos ? "" : rest.substr(slash);
-  const char* env = std::getenv("ROS_PACKAGE_PATH");
-  std::istringstream dirs(env ? env : "");
-  std::string dir;
-  while (std::getline(dirs, dir, ':'))
-    for (const std::string& candidate : { dir + "/" + package, dir + "/src/" + package })
-      if (fileExists(candidate + "/package.xml") && fileExists(candidate + relative))
-        return candidate + relative;
-  throw std::runtime_error(uri + ": package '" + package + "' not found on ROS_PACKAGE_PATH");
-}
 
 std::unique_ptr<btConvexHullShape> loadConvexHull(const std::string& path, const Eigen::Vector3d& scale)
 {

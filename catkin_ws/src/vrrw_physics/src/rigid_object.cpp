@@ -1,80 +1,35 @@
-#include <vrrw_physics/mesh_shape.h>
+#include <vrrw_physics/input_limits.h>
 #include <vrrw_physics/rigid_object.h>
 
-#include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
-#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
-#include <BulletCollision/CollisionShapes/btCylinderShape.h>
-#include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
+
+#include "bullet_conversions.h"
+#include "collision_shape.h"
 
 namespace vrrw_physics
 {
-namespace
-{
-btVector3 bt(const Eigen::Vector3d& v)
-{
-  return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z()));
-}
-
-btTransform bt(const Eigen::Isometry3d& t)
-{
-  const Eigen::Quaterniond q(t.rotation());
-  return btTransform(btQuaternion(btScalar(q.x()), btScalar(q.y()), btScalar(q.z()), btScalar(q.w())),
-                     bt(Eigen::Vector3d(t.translation())));
-}
-
-Eigen::Isometry3d eigen(const btTransform& t)
-{
-  const btQuaternion q = t.getRotation();
-  Eigen::Isometry3d e = Eigen::Isometry3d::Identity();
-  e.translate(Eigen::Vector3d(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z()));
-  e.rotate(Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()));
-  return e;
-}
-
-std::unique_ptr<btCollisionShape> makeShape(const vrrw_scene::Shape& shape, const std::string& object)
-{
-  using Type = vrrw_scene::Shape::Type;
-  std::unique_ptr<btCollisionShape> result;
-  switch (shape.type)
-  {
-    case Type::Box:
-      result = std::make_unique<btBoxShape>(bt(Eigen::Vector3d(shape.box_size / 2)));
-      break;
-    case Type::Cylinder:
-      result = std::make_unique<btCylinderShapeZ>(
-          btVector3(btScalar(shape.radius), btScalar(shape.radius), btScalar(shape.length / 2)));
-      break;
-    case Type::Sphere:
-      return std::make_unique<btSphereShape>(btScalar(shape.radius));
-    case Type::Mesh:
-      try
-      {
-        return loadConvexHull(resolveMeshPath(shape.mesh_path), shape.mesh_scale);
-      }
-      catch (const std::runtime_error& e)
-      {
-        throw std::runtime_error("object " + object + ": " + e.what());
-      }
-  }
-  result->setMargin(btScalar(0.001));
-  return result;
-}
-}  // namespace
-
 RigidObject::RigidObject(const vrrw_scene::Object& object)
   : name_(object.name), fixed_(object.fixed || object.mass <= 0.0)
 {
   if (object.collision.empty())
     throw std::runtime_error("object " + name_ + ": no collision shapes");
-  if (!fixed_ && !object.inertia.allFinite())
-    throw std::runtime_error("object " + name_ + ": inertia is not finite");
+  if (!fixed_ && (!object.inertia.allFinite() || !object.center_of_mass.allFinite() || !std::isfinite(object.mass)))
+    throw std::runtime_error("object " + name_ + ": mass, centre of mass or inertia is not finite");
+  try
+  {
+    requireWorkspacePose(object.pose, "object " + name_);
+  }
+  catch (const InputError& e)
+  {
+    throw std::runtime_error(e.what());
+  }
   object_T_body_ = Eigen::Isometry3d::Identity();
   Eigen::Vector3d principal = Eigen::Vector3d::Zero();
   const bool given_inertia = object.inertia.trace() > 0.0;
@@ -95,17 +50,24 @@ RigidObject::RigidObject(const vrrw_scene::Object& object)
   const Eigen::Isometry3d body_T_object = object_T_body_.inverse();
   for (const vrrw_scene::Shape& shape : object.collision)
   {
-    shapes_.push_back(makeShape(shape, name_));
-    compound->addChildShape(bt(body_T_object * shape.origin), shapes_.back().get());
+    try
+    {
+      shapes_.push_back(makeCollisionShape(shape));
+    }
+    catch (const std::runtime_error& e)
+    {
+      throw std::runtime_error("object " + name_ + ": collision " + e.what());
+    }
+    compound->addChildShape(toBullet(body_T_object * shape.origin), shapes_.back().get());
   }
-  btVector3 inertia = bt(principal);
+  btVector3 inertia = toBullet(principal);
   const btScalar mass = fixed_ ? btScalar(0) : btScalar(object.mass);
   if (!fixed_ && !given_inertia)
     compound->calculateLocalInertia(mass, inertia);
   btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, compound.get(), inertia);
   info.m_friction = btScalar(object.friction);
   info.m_restitution = btScalar(object.restitution);
-  info.m_startWorldTransform = bt(object.pose * object_T_body_);
+  info.m_startWorldTransform = toBullet(object.pose * object_T_body_);
   shapes_.push_back(std::move(compound));
   body_ = std::make_unique<btRigidBody>(info);
   body_->setRollingFriction(btScalar(0.0));
@@ -132,47 +94,51 @@ RigidObject::~RigidObject()
 void RigidObject::addToWorld(btDiscreteDynamicsWorld* world)
 {
   world_ = world;
-  world->addRigidBody(body_.get());
+  if (fixed_)
+    world->addRigidBody(body_.get());
+  else
+    world->addRigidBody(body_.get(), int(btBroadphaseProxy::DefaultFilter) | kMovableObjectGroup,
+                        int(btBroadphaseProxy::AllFilter));
 }
 
 Eigen::Isometry3d RigidObject::pose() const
 {
-  return eigen(body_->getWorldTransform()) * object_T_body_.inverse();
+  return toEigen(body_->getWorldTransform()) * object_T_body_.inverse();
 }
 
 void RigidObject::setPose(const Eigen::Isometry3d& pose)
 {
-  body_->setWorldTransform(bt(pose * object_T_body_));
+  body_->setWorldTransform(toBullet(pose * object_T_body_));
   body_->setInterpolationWorldTransform(body_->getWorldTransform());
+  body_->clearForces();
   setVelocity(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
 }
 
 Eigen::Vector3d RigidObject::linearVelocity() const
 {
-  const btVector3& v = body_->getLinearVelocity();
-  return Eigen::Vector3d(v.x(), v.y(), v.z());
+  return toEigen(body_->getLinearVelocity());
 }
 
 Eigen::Vector3d RigidObject::angularVelocity() const
 {
-  const btVector3& w = body_->getAngularVelocity();
-  return Eigen::Vector3d(w.x(), w.y(), w.z());
+  return toEigen(body_->getAngularVelocity());
 }
 
 Eigen::Vector3d RigidObject::pointVelocity(const Eigen::Vector3d& point) const
 {
-  const btVector3 arm = bt(Eigen::Vector3d(pose() * point)) - body_->getCenterOfMassPosition();
-  const btVector3 v = body_->getVelocityInLocalPoint(arm);
-  return Eigen::Vector3d(v.x(), v.y(), v.z());
+  const btVector3 arm = toBullet(Eigen::Vector3d(pose() * point)) - body_->getCenterOfMassPosition();
+  return toEigen(body_->getVelocityInLocalPoint(arm));
 }
 
 void RigidObject::setVelocity(const Eigen::Vector3d& linear, const Eigen::Vector3d& angular)
 {
   if (fixed_)
     return;
-  body_->setLinearVelocity(bt(linear));
-  body_->setAngularVelocity(bt(angular));
-  body_->activate(true);
+  body_->setLinearVelocity(toBullet(linear));
+  body_->setAngularVelocity(toBullet(angular));
+  // Forced: Bullet takes a body whose bounds overflowed out of the simulation for good (DISABLE_SIMULATION).
+  body_->forceActivationState(ACTIVE_TAG);
+  body_->setDeactivationTime(0);
 }
 
 void RigidObject::applyWrench(const Eigen::Vector3d& point, const Eigen::Vector3d& force, const Eigen::Vector3d& torque)
@@ -181,8 +147,8 @@ void RigidObject::applyWrench(const Eigen::Vector3d& point, const Eigen::Vector3
     return;
   const Eigen::Vector3d world_point = pose() * point;
   const btVector3& com = body_->getCenterOfMassPosition();
-  body_->applyForce(bt(force), bt(world_point) - com);
-  body_->applyTorque(bt(torque));
+  body_->applyForce(toBullet(force), toBullet(world_point) - com);
+  body_->applyTorque(toBullet(torque));
   body_->activate(true);
 }
 }  // namespace vrrw_physics

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -50,14 +51,21 @@ Trajectory simulate(bool reference)
       std::vector<std::string> names;
       std::vector<double> targets;
       for (std::size_t j = 0; j < s.name.size(); ++j)
-        if (world.robot(robot).joints()[j].drive >= 0)
-        {
-          names.push_back(s.name[j]);
-          targets.push_back(s.position[j] + (j % 2 ? 0.2 : -0.2) * std::sin(1.5 * t));
-        }
+      {
+        const SimJoint& joint = world.robot(robot).joints()[j];
+        if (joint.drive < 0)
+          continue;
+        names.push_back(s.name[j]);
+        targets.push_back(s.position[j] + (j % 2 ? 0.2 : -0.2) * std::sin(1.5 * t));
+        // Past a limit by up to the 5 % of the range a target may: the joint presses into its limit row.
+        const double margin = kJointLimitMargin * (joint.upper - joint.lower);
+        if (joint.limited)
+          targets.back() = std::clamp(targets.back(), joint.lower - margin, joint.upper + margin);
+      }
       world.setDriveTargets(robot, names, targets, {});
     }
-    world.setHandPose(Eigen::Isometry3d(Eigen::Translation3d(wrist + Eigen::Vector3d(0.0, -0.12 + 0.1 * t, 0.0))), 0.04);
+    const Eigen::Vector3d hand = wrist + Eigen::Vector3d(0.0, -0.12 + 0.1 * t, 0.0);
+    world.operatorInput().setHand("hand", Eigen::Isometry3d(Eigen::Translation3d(hand)), 0.04);
     run.rejected += !world.step();
     for (const std::string& robot : world.robotNames())
     {

@@ -53,7 +53,7 @@ TEST(JointSpaceAccelerations, EqualBulletsArticulatedBodyPassWithVelocitiesForce
     }
     JointSpaceResponse response;
     response.joint_of_dof = robot.response().joint_of_dof;
-    const JointMatrix m = jointSpaceInertia(robot);
+    const JointMatrix m = jointSpaceInertia(*robot.body(), robot.framePoses());
     response.setInertia(m);
     ASSERT_TRUE(supportsJointSpaceAccelerations(*body, response)) << spec.name;
     std::vector<double> ours(std::size_t(6 + body->getNumDofs()));

@@ -1,8 +1,11 @@
-// Node test against a real master: joint states per robot and combined, objects on tf, drive
-// targets move the arm, bad input gets an error on ~errors and the node keeps running,
-// pause / step / resume / reset.
+// Node test against a real master: joint states per robot and combined, objects on tf, contacts, drive
+// targets move the arm and hold when they stop, bad input gets a rate-limited error on ~errors and the node
+// keeps running, hands, pause / step / resume / reset.
+#include <vrrw_physics/Contacts.h>
+#include <vrrw_physics/Hand.h>
 #include <vrrw_physics/SetGains.h>
 #include <vrrw_physics/SetMode.h>
+#include <vrrw_physics/SetObjectPose.h>
 #include <vrrw_physics/SetSpring.h>
 #include <vrrw_physics/SpringTarget.h>
 
@@ -56,9 +59,15 @@ struct Listener
     return it == last.name.end() ? std::numeric_limits<double>::quiet_NaN() : last.position[std::size_t(it - last.name.begin())];
   }
 
+  int errorsMentioning(const std::string& text) const
+  {
+    return int(std::count_if(errors.begin(), errors.end(),
+                             [&](const std::string& e) { return e.find(text) != std::string::npos; }));
+  }
+
   bool errorMentions(const std::string& text) const
   {
-    return std::any_of(errors.begin(), errors.end(), [&](const std::string& e) { return e.find(text) != std::string::npos; });
+    return errorsMentioning(text) > 0;
   }
 
   sensor_msgs::JointState all_last;
@@ -126,7 +135,7 @@ TEST(PhysicsNode, BadInputIsReportedAndTheNodeKeepsRunning)
   gains.request.damping = { 1.0, 2.0 };
   ASSERT_TRUE(ros::service::call("/physics/set_gains", gains));
   EXPECT_FALSE(gains.response.success);
-  EXPECT_NE(gains.response.message.find("6 joints but 2"), std::string::npos) << gains.response.message;
+  EXPECT_NE(gains.response.message.find("6 joint names but 2"), std::string::npos) << gains.response.message;
   gains.request.joints = { "ur5e_elbow_joint" };
   gains.request.stiffness = { -5.0 };
   gains.request.damping = { 1.0 };
@@ -194,6 +203,115 @@ TEST(PhysicsNode, CompliantArmFollowsAnOperatorSpring)
   ASSERT_TRUE(ros::service::call("/physics/set_spring", spring) && spring.response.success);
   mode.request.mode = "rigid";
   ASSERT_TRUE(ros::service::call("/physics/set_mode", mode) && mode.response.success);
+  const int after = l.count;
+  ASSERT_TRUE(l.waitFor([&] { return l.count > after + 2; }, 5.0));
+  const double held = l.position("ur5e_shoulder_pan_joint");
+  l.waitFor([] { return false; }, 1.0);
+  EXPECT_NEAR(l.position("ur5e_shoulder_pan_joint"), held, 1e-3);  // rigid holds where the push left it
+  ASSERT_TRUE(trigger("/physics/reset"));
+}
+
+TEST(PhysicsNode, PublishesContactsAndTakesNamedHands)
+{
+  Listener l;
+  ros::NodeHandle nh;
+  vrrw_physics::Contacts contacts;
+  int received = 0;
+  ros::Subscriber sub =
+      nh.subscribe<vrrw_physics::Contacts>("/physics/contacts", 10, [&](const vrrw_physics::ContactsConstPtr& m) {
+        contacts = *m;
+        ++received;
+      });
+  ros::Publisher hands = nh.advertise<vrrw_physics::Hand>("/physics/hand", 10);
+  ASSERT_TRUE(l.waitFor([&] { return received > 5 && hands.getNumSubscribers() > 0; }, 10.0));
+  ASSERT_TRUE(trigger("/physics/reset"));
+  const auto drillOnTable = [&] {
+    for (const auto& c : contacts.contacts)
+      if (c.body_a == "drill" && c.body_b == "table")
+        return c.normal_force;
+    return 0.0;
+  };
+  EXPECT_TRUE(l.waitFor([&] { return std::abs(drillOnTable() - 1.5 * 9.81) < 1.5; }, 5.0)) << drillOnTable() << " N";
+  vrrw_physics::Hand hand;
+  hand.id = "left";
+  hand.pose.position.z = 2.0;  // in free space, above everything
+  hand.pose.orientation.w = 1.0;
+  hand.radius = 1.0;
+  hands.publish(hand);
+  EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("hand 'left' radius: 1 outside [0, 0.25] m"); }, 5.0));
+  hand.radius = 0.05;
+  hands.publish(hand);  // accepted; it falls silent and goes after 0.5 s
+  EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("hand 'left': no pose for"); }, 5.0));
+}
+
+TEST(PhysicsNode, WildInputIsRefusedAndRepeatedErrorsAreRateLimited)
+{
+  Listener l;
+  ros::NodeHandle nh;
+  ros::Publisher targets = nh.advertise<sensor_msgs::JointState>("/ur5e/drive_targets", 1000);
+  ASSERT_TRUE(l.waitFor([&] { return targets.getNumSubscribers() > 0 && l.count > 0; }, 10.0));
+  vrrw_physics::SetSpring spring;  // the probe that froze the node before: stiffness and max_force 1e12
+  spring.request.id = "hand";
+  spring.request.body = "ur5e_wrist_3_link";
+  spring.request.target.orientation.w = 1.0;
+  spring.request.stiffness = 1e12;
+  spring.request.max_force = 1e12;
+  ASSERT_TRUE(ros::service::call("/physics/set_spring", spring));
+  EXPECT_FALSE(spring.response.success);
+  EXPECT_NE(spring.response.message.find("stiffness: 1e+12 outside [0, 10000] N/m"), std::string::npos)
+      << spring.response.message;
+  vrrw_physics::SetObjectPose pose;
+  pose.request.object = "drill";
+  pose.request.pose.position.x = 1e300;
+  pose.request.pose.orientation.w = 1.0;
+  ASSERT_TRUE(ros::service::call("/physics/set_object_pose", pose));
+  EXPECT_FALSE(pose.response.success);
+  EXPECT_NE(pose.response.message.find("outside [-100, 100] m"), std::string::npos) << pose.response.message;
+  pose.request.object = "table";
+  pose.request.pose.position.x = 0.0;
+  ASSERT_TRUE(ros::service::call("/physics/set_object_pose", pose));
+  EXPECT_NE(pose.response.message.find("fixed"), std::string::npos) << pose.response.message;
+  // 300 bad targets in 0.3 s: one error line, then at most one a second that counts the rest.
+  sensor_msgs::JointState bad;
+  bad.name = { "ur5e_no_such_joint" };
+  bad.position = { 0.0 };
+  ros::spinOnce();
+  const int before = l.errorsMentioning("ur5e_no_such_joint");
+  for (int i = 0; i < 300; ++i)
+  {
+    targets.publish(bad);
+    ros::WallDuration(0.001).sleep();
+  }
+  l.waitFor([] { return false; }, 1.5);
+  const int lines = l.errorsMentioning("ur5e_no_such_joint") - before;
+  EXPECT_GE(lines, 1);
+  EXPECT_LE(lines, 3);
+}
+
+TEST(PhysicsNode, TargetsThatStopArrivingHoldTheLastTarget)
+{
+  Listener l;
+  ros::NodeHandle nh;
+  ros::Publisher targets = nh.advertise<sensor_msgs::JointState>("/ur5e/drive_targets", 10);
+  ASSERT_TRUE(l.waitFor([&] { return targets.getNumSubscribers() > 0 && l.count > 0; }, 10.0));
+  ASSERT_TRUE(trigger("/physics/reset"));
+  // A controller streams a ramp at 0.25 rad/s (with an effort limit) for 0.3 s, then dies.
+  sensor_msgs::JointState ramp;
+  ramp.name = { "ur5e_shoulder_pan_joint" };
+  ramp.velocity = { 0.25 };
+  ramp.effort = { 100.0 };
+  const ros::WallTime start = ros::WallTime::now();
+  double last = 0.0;
+  while ((ros::WallTime::now() - start).toSec() < 0.3)
+  {
+    last = 0.25 * (ros::WallTime::now() - start).toSec();
+    ramp.position = { last };
+    targets.publish(ramp);
+    ros::WallDuration(0.01).sleep();
+  }
+  EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("ur5e: no drive targets for 0.1 s"); }, 5.0));
+  EXPECT_TRUE(l.waitFor([&] { return std::abs(l.position("ur5e_shoulder_pan_joint") - last) < 5e-3; }, 10.0))
+      << "pan at " << l.position("ur5e_shoulder_pan_joint") << ", last target " << last;
   ASSERT_TRUE(trigger("/physics/reset"));
 }
 

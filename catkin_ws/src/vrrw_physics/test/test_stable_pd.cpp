@@ -22,7 +22,7 @@ TEST(JointSpaceInertia, InertiaOfThePendulumIsItsMomentAboutTheAxis)
 {
   const auto urdf = vrrw_physics_test::pendulumModel();
   ArticulatedRobot robot(*urdf, "p", "p_base_link");
-  EXPECT_NEAR(jointSpaceInertia(robot)(0, 0), 0.51, 1e-9);
+  EXPECT_NEAR(jointSpaceInertia(*robot.body(), robot.framePoses())(0, 0), 0.51, 1e-9);
 }
 
 TEST(JointSpaceInertia, InertiaMatchesBulletsResponseToJointImpulses)
@@ -40,7 +40,7 @@ TEST(JointSpaceInertia, InertiaMatchesBulletsResponseToJointImpulses)
     const std::vector<double> q0{ 0.4, -0.7, 0.1 };
     const double h = 1e-4;
     robot.setState(q0, { 0, 0, 0 });
-    const Eigen::MatrixXd m = jointSpaceInertia(robot);
+    const Eigen::MatrixXd m = jointSpaceInertia(*robot.body(), robot.framePoses());
     for (std::size_t j = 0; j < 3; ++j)
     {
       robot.setState(q0, { 0, 0, 0 });
@@ -64,7 +64,7 @@ TEST(StablePd, ImplicitTorqueBringsTheJointToItsPredictedVelocity)
   robot.drives()[0]->setTarget(0.1, 0.0);
   StablePd pd(robot);
   const double h = 0.001;
-  const double tau = pd.torques(h, jointSpaceInertia(robot), { 0.0 })[0];
+  const double tau = pd.torques(h, jointSpaceInertia(*robot.body(), robot.framePoses()), { 0.0 })[0];
   // x = (I v + h (K e)) / (I + h (h K + D)); tau = K (e - h x) - D x.
   const double x = (0.51 * 0.2 + h * 1e5 * 0.1) / (0.51 + h * (h * 1e5 + 8e4));
   EXPECT_NEAR(tau, 1e5 * (0.1 - h * x) - 8e4 * x, 1e-4);  // Bullet stores the inertia in float

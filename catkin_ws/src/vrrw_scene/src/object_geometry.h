@@ -12,10 +12,4 @@ Object objectFromUrdf(const urdf::ModelInterface& model, const ObjectSpec& spec,
 
 /// \brief A box, cylinder, sphere or mesh object from the scene's own fields.
 Object primitiveObject(const ObjectSpec& spec);
-
-/// \brief A URDF geometry as a Shape placed at `origin`.
-Shape shapeFromUrdf(const urdf::Geometry& geometry, const Eigen::Isometry3d& origin, const std::string& base_dir);
-
-/// \brief A URDF pose as an isometry.
-Eigen::Isometry3d toIsometry(const urdf::Pose& pose);
 }  // namespace vrrw_scene

@@ -167,30 +167,6 @@ void setInitial(const urdf::ModelInterface& model, const std::string& prefix, co
   }
 }
 
-/// Each movable joint's limit: a gripper joint's from the gripper config, every other one's from the model config.
-std::map<std::string, double> accelerationLimits(const Robot& robot)
-{
-  const std::string& gripper_config = robot.gripper_config_file;
-  const std::string prefix = robot.name + "_";
-  const auto arm = loadAccelerationLimits(robot.config_file, prefix);
-  const auto hand = gripper_config.empty() ? arm : loadAccelerationLimits(gripper_config, prefix);
-  std::map<std::string, double> limits;
-  for (const auto& entry : robot.initial_positions)
-  {
-    const std::string& joint = entry.first;
-    const bool in_gripper = !gripper_config.empty() &&
-                            std::count(robot.gripper_joints.begin(), robot.gripper_joints.end(), joint) > 0;
-    const auto& source = in_gripper ? hand : arm;
-    const auto limit = source.find(joint);
-    if (limit == source.end())
-      throw SceneError((in_gripper ? gripper_config : robot.config_file) + ": acceleration_limits." +
-                       joint.substr(prefix.size()) + ": missing for joint '" + joint + "' of robot '" + robot.name +
-                       "'");
-    limits[joint] = limit->second;
-  }
-  return limits;
-}
-
 Robot makeRobot(const urdf::ModelInterface& model, const RobotSpec& spec, const Catalog& catalog, const std::string& root)
 {
   Robot robot;
@@ -238,8 +214,7 @@ Robot makeRobot(const urdf::ModelInterface& model, const RobotSpec& spec, const 
   const auto gripper = catalog.grippers.find(spec.gripper);
   if (gripper != catalog.grippers.end() && !gripper->second.config.empty())
     robot.gripper_config_file = root + "/urdf/" + gripper->second.config;
-  if (!robot.config_file.empty())
-    robot.acceleration_limits = accelerationLimits(robot);
+  readRobotConfig(robot);
   return robot;
 }
 }  // namespace

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "vrrw_scene/mesh_path.h"
 #include "vrrw_scene/scene.h"
 
 namespace fs = std::filesystem;
@@ -166,7 +167,7 @@ std::string addCustomRobot(const std::string& urdf, const RobotSpec& robot, cons
     for (auto* part = element->FirstChildElement(); part; part = part->NextSiblingElement())
       if (auto* mesh = part->FirstChildElement("geometry") ? part->FirstChildElement("geometry")->FirstChildElement("mesh") : nullptr)
       {
-        const std::string path = meshPath(attribute(mesh, "filename"), fs::path(robot.description).parent_path());
+        const std::string path = resolveMeshPath(attribute(mesh, "filename"), fs::path(robot.description).parent_path());
         mesh->SetAttribute("filename", ("file://" + path).c_str());
       }
     if (tag == "link" || tag == "joint" || tag == "material")
@@ -204,7 +205,7 @@ void checkUrdf(const std::string& urdf, const std::string& source)
       if (!mesh)
         continue;
       const std::string uri = attribute(mesh, "filename");
-      if (meshPath(uri, fs::path(source).parent_path()).empty())
+      if (resolveMeshPath(uri, fs::path(source).parent_path()).empty())
         throw SceneError(source + ": link '" + name + "': " + part->Name() + " mesh '" + uri + "' does not exist");
     }
   }
@@ -240,25 +241,5 @@ std::string withoutLinks(const std::string& urdf, const std::set<std::string>& l
     element = next;
   }
   return print(doc);
-}
-
-std::string meshPath(const std::string& uri, const std::string& base_dir)
-{
-  std::string path = uri;
-  if (path.rfind("file://", 0) == 0)
-    path = path.substr(7);
-  else if (path.rfind("package://", 0) == 0)
-  {
-    const std::string rest = path.substr(10);
-    const char* env = std::getenv("ROS_PACKAGE_PATH");
-    std::istringstream dirs(env ? env : "");
-    for (std::string dir; std::getline(dirs, dir, ':');)
-      if (fs::is_regular_file(fs::path(dir) / rest))
-        return (fs::path(dir) / rest).string();
-    return "";
-  }
-  else if (fs::path(path).is_relative())
-    path = (fs::path(base_dir) / path).string();
-  return fs::is_regular_file(path) ? path : "";
 }
 }  // namespace vrrw_scene

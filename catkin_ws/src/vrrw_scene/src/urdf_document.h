@@ -22,7 +22,4 @@ void checkUrdf(const std::string& urdf, const std::string& source);
 
 /// \brief The document without the given links and the joints that lead to them.
 std::string withoutLinks(const std::string& urdf, const std::set<std::string>& links);
-
-/// \brief A mesh URI (file://, package://, absolute or relative to base_dir) as a file path; "" if unresolved.
-std::string meshPath(const std::string& uri, const std::string& base_dir);
 }  // namespace vrrw_scene

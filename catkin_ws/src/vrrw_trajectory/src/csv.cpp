@@ -1,10 +1,12 @@
-#include "vrrw_trajectory/csv.h"
+#include <vrrw_trajectory/csv.h>
 
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
+
+#include <vrrw_trajectory/whole_file.h>
 
 namespace vrrw_trajectory
 {
@@ -195,9 +197,10 @@ JointTrajectory readCsv(const std::string& path)
   return readCsv(in, path);
 }
 
-void writeCsv(std::ostream& out, const JointTrajectory& trajectory, const std::string& source)
+namespace
 {
-  checkWritable(trajectory, source);
+std::string csvText(const JointTrajectory& trajectory)
+{
   std::string text = "t";
   for (const auto& name : trajectory.joint_names)
     text += "," + name;
@@ -213,7 +216,14 @@ void writeCsv(std::ostream& out, const JointTrajectory& trajectory, const std::s
       (text += ',') += formatNumber(qd);
     text += '\n';
   }
-  out << text;
+  return text;
+}
+}  // namespace
+
+void writeCsv(std::ostream& out, const JointTrajectory& trajectory, const std::string& source)
+{
+  checkWritable(trajectory, source);
+  out << csvText(trajectory);
   if (!out)
     throw TrajectoryError(source + ": write failed");
 }
@@ -221,12 +231,6 @@ void writeCsv(std::ostream& out, const JointTrajectory& trajectory, const std::s
 void writeCsv(const std::string& path, const JointTrajectory& trajectory)
 {
   checkWritable(trajectory, path);
-  std::ofstream out(path);
-  if (!out)
-    throw TrajectoryError(path + ": cannot open for writing");
-  writeCsv(out, trajectory, path);
-  out.close();
-  if (!out)
-    throw TrajectoryError(path + ": write failed");
+  writeWholeFile(path, csvText(trajectory));
 }
 }  // namespace vrrw_trajectory

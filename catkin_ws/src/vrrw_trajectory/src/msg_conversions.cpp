@@ -1,4 +1,4 @@
-#include "vrrw_trajectory/msg_conversions.h"
+#include <vrrw_trajectory/msg_conversions.h>
 
 namespace vrrw_trajectory
 {

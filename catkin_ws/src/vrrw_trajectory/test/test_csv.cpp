@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "vrrw_trajectory/csv.h"
+#include <vrrw_trajectory/csv.h>
 
 using vrrw_trajectory::JointTrajectory;
 using vrrw_trajectory::readCsv;

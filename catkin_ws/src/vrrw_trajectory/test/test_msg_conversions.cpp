@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "vrrw_trajectory/msg_conversions.h"
+#include <vrrw_trajectory/msg_conversions.h>
 
 TEST(MsgConversions, RoundTripKeepsEveryValueAndTime)
 {

@@ -3,10 +3,10 @@
 #include <string>
 #include <vector>
 
-#include "vrrw_dmp/dmp_parameters.h"
-#include "vrrw_dmp/gaussian_basis.h"
-#include "vrrw_dmp/spring_damper_step.h"
-#include "vrrw_trajectory/joint_trajectory.h"
+#include <vrrw_dmp/dmp_parameters.h>
+#include <vrrw_dmp/gaussian_basis.h>
+#include <vrrw_dmp/spring_damper_step.h>
+#include <vrrw_trajectory/joint_trajectory.h>
 
 namespace vrrw_dmp
 {
@@ -89,7 +89,8 @@ public:
       DmpProvenance provenance, std::vector<std::string> warnings = {});
 
   /// \brief Rolls out from t = 0 for tau (the demo's duration scaled), then on until every joint has
-  /// settled at its goal within the request's tolerances (at most 4 tau). Samples every dt.
+  /// settled at its goal within the request's tolerances (at most kSettlingFactor tau). Samples every
+  /// dt. Throws DmpError for a request whose worst case exceeds kMaxRolloutSamples, before allocating.
   vrrw_trajectory::JointTrajectory rollout(const RolloutRequest& request) const;
 
   /// \brief One line per concern about rolling out to \a request's start and goal (empty: as
@@ -125,12 +126,19 @@ public:
   /// A goal scaling factor (g - x0) / (g_demo - x0_demo) above this amplifies the demonstrated shape
   /// enough that planWarnings() reports it.
   static constexpr double kMaxGoalScaling = 3.0;
+  /// A rollout lasts at most this many times tau (the settling after tau included).
+  static constexpr std::size_t kSettlingFactor = 4;
+  /// The most samples a rollout may produce (kSettlingFactor tau / dt + 1): about 270 MB of trajectory
+  /// for 6 joints, 250 s at 1 kHz or 2000 s at 125 Hz of tau.
+  static constexpr std::size_t kMaxRolloutSamples = 1000000;
 
 private:
   /// Steps longer than this fraction of the basis spacing (in time) are split, so that the forcing
   /// term's bumps are resolved at any dt.
   static constexpr double kMaxSubstep = 0.1;
 
+  /// ceil(tau / dt) of a valid request; throws DmpError naming what is wrong or over the limit.
+  std::size_t nominalSteps(const RolloutRequest& request, double tau) const;
   void forcingAt(double s, double* psi, double* forcing) const;
   void integrate(DmpState& state) const;
 

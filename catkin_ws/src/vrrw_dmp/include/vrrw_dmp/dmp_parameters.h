@@ -21,6 +21,10 @@ AmplitudeScaling amplitudeScalingFromString(const std::string& text);
 /// \brief Learning parameters of a Dmp. Defaults follow Ijspeert et al. 2013 (alpha_z = 25, beta_z = 6.25).
 struct DmpParameters
 {
+  /// More basis functions than this are refused: far beyond what a demonstration resolves (a 60 s
+  /// recording at 1 kHz has 6 samples per function), and a model's size grows with N.
+  static constexpr std::size_t kMaxBasisCount = 10000;
+
   std::size_t basis_count = 50;  ///< N Gaussian basis functions
   double alpha = 4.0;            ///< canonical decay: s = exp(-alpha) at the end of the demonstration
   double K = 156.25;             ///< spring constant

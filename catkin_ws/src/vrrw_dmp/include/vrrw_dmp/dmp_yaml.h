@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "vrrw_dmp/dmp.h"
+#include <vrrw_dmp/dmp.h>
 
 namespace vrrw_dmp
 {
@@ -15,7 +15,8 @@ std::string toYaml(const Dmp& dmp);
 /// \brief Parses YAML text; \a source names it in errors. Throws DmpError.
 Dmp fromYaml(const std::string& text, const std::string& source);
 
-/// \brief Writes the model file; throws DmpError naming the path.
+/// \brief Writes the model file, complete or not at all (vrrw_trajectory::writeWholeFile); throws
+/// DmpError naming the path.
 void saveDmp(const Dmp& dmp, const std::string& path);
 /// \brief Reads a model file; throws DmpError naming the path and the field.
 Dmp loadDmp(const std::string& path);

@@ -84,7 +84,4 @@ private:
   std::map<std::string, int> link_index_;
   std::map<std::string, int> joint_index_;
 };
-
-/// \brief Resolves package://, file:// and plain mesh paths to a file path ("" when not found).
-std::string resolveMeshPath(const std::string& uri);
 }  // namespace vrrw_kinematics

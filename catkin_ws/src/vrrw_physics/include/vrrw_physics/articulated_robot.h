@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <LinearMath/btScalar.h>
 #include <urdf_model/model.h>
 
 class btMultiBody;
@@ -19,6 +20,8 @@ class btCollisionShape;
 
 namespace vrrw_physics
 {
+struct MergedBody;
+
 /// \brief Contact material of every link of a robot.
 struct LinkMaterial
 {
@@ -113,6 +116,11 @@ public:
   /// \brief World pose of a Bullet link frame (COM, principal axes); -1 for the base
   /// (as of the last refreshFrames()).
   const Eigen::Isometry3d& bodyPose(int body) const { return poses_[std::size_t(body + 1)]; }
+  /// \brief Every bodyPose, the base first.
+  const std::vector<Eigen::Isometry3d>& framePoses() const { return poses_; }
+  /// \brief The URDF link of child shape `shape` of Bullet link `body`'s collider (-1: the base); the
+  /// body's first link for a shape it does not have (a link without collision geometry).
+  const std::string& shapeLink(int body, int shape) const;
   /// \brief Re-reads link frames from Bullet (after a step); setState() does it too.
   void refreshFrames();
   /// \brief The joint-space inertia M of the configuration (as of refreshFrames()), whose inverse
@@ -122,12 +130,28 @@ public:
   void clearFeedForward();
 
 private:
+  void createMultiBody(const std::vector<MergedBody>& bodies, const Eigen::Isometry3d& base_pose);
+  void setupLink(int link, const MergedBody& body, const MergedBody& parent);
+  void createColliders(const std::vector<MergedBody>& bodies, const LinkMaterial& material);
+  /// The body's collision shapes as one compound (owned by shapes_); a tiny sphere for a body without any.
+  btCollisionShape* compoundShape(const MergedBody& body);
+  void createJointRows(const urdf::ModelInterface& model);
+  void addCoupling(std::size_t joint, const urdf::JointMimic& mimic);
+
+  /// The URDF links of a collider: its body's first link, and the link of each child shape.
+  struct ShapeLinks
+  {
+    std::string body_link;
+    std::vector<std::string> shapes;
+  };
   struct LinkFrame
   {
     int body = -1;  ///< -1 for the base
     Eigen::Isometry3d body_T_link = Eigen::Isometry3d::Identity();
   };
   const LinkFrame& linkFrame(const std::string& link) const;
+  /// One value per joint (order of joints()) read from Bullet: getJointPos, getJointVel.
+  std::vector<double> jointValues(btScalar (btMultiBody::*value)(int) const) const;
   /// World angular and linear (COM) velocity of a Bullet link.
   std::pair<Eigen::Vector3d, Eigen::Vector3d> bodyVelocity(int body) const;
 
@@ -144,6 +168,7 @@ private:
   std::vector<double> feed_forward_;
   std::vector<int> coupling_of_joint_;
   std::map<std::string, LinkFrame> links_;
+  std::vector<ShapeLinks> shape_links_;  ///< per collider, the base first
   std::vector<Eigen::Isometry3d> poses_;
   JointMatrix inertia_;
   JointSpaceResponse response_;

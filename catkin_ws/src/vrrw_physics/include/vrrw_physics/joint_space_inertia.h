@@ -1,5 +1,5 @@
 #pragma once
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <vector>
 
 class btMultiBody;
@@ -8,17 +8,16 @@ struct btMultiBodySolverConstraint;
 
 namespace vrrw_physics
 {
-class ArticulatedRobot;
-
 /// \brief Most movable joints of one robot (storage of joint-space matrices is fixed, no heap).
 constexpr int kMaxJoints = 32;
 using JointMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxJoints, kMaxJoints>;
 using JointVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxJoints, 1>;
 
-/// \brief Joint-space inertia M of a fixed-base robot (order of ArticulatedRobot::joints()) by the
-/// composite rigid body algorithm on its current link frames. Featherstone, "Rigid Body Dynamics
-/// Algorithms", 2008, ch. 6.
-JointMatrix jointSpaceInertia(const ArticulatedRobot& robot);
+/// \brief Joint-space inertia M of a fixed-base multibody whose link k is joint k (one revolute or
+/// prismatic dof per link, as ArticulatedRobot builds them), by the composite rigid body algorithm on the
+/// world poses of its Bullet frames (`frames[0]` the base, `frames[k + 1]` link k, as
+/// ArticulatedRobot::framePoses()). Featherstone, "Rigid Body Dynamics Algorithms", 2008, ch. 6.
+JointMatrix jointSpaceInertia(const btMultiBody& body, const std::vector<Eigen::Isometry3d>& frames);
 
 /// \brief M^-1 of one robot for the current step, so solver rows on joint coordinates need no
 /// articulated-body pass each (Bullet's fillMultiBodyConstraint does two per row).

@@ -12,12 +12,13 @@ struct OperatorSpring
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< attachment point in the body's frame
   Eigen::Isometry3d target = Eigen::Isometry3d::Identity();  ///< in the world
   Eigen::Vector3d target_velocity = Eigen::Vector3d::Zero();
-  double stiffness = 500.0;         ///< N/m
-  double damping = 20.0;            ///< N s/m
+  /// \brief N/m. The default and `damping`'s are the recommended gains for a hand dragging a compliant arm: the
+  /// UR5e's wrist follows a target moving 0.2 m/s within 1.3 cm RMS (test_operator_input).
+  double stiffness = 5000.0;
+  double damping = 100.0;           ///< N s/m
   double angular_stiffness = 0.0;   ///< Nm/rad; 0 leaves orientation free
   double angular_damping = 0.0;     ///< Nm s/rad
   double max_force = 200.0;         ///< N, and Nm for the torque
-  bool active = false;
 
   /// \brief Force at the attachment point from its world position and velocity.
   Eigen::Vector3d force(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) const;

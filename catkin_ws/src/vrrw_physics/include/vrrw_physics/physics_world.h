@@ -1,15 +1,15 @@
 #pragma once
 #include <vrrw_physics/articulated_robot.h>
-#include <vrrw_physics/drive_gains.h>
-#include <vrrw_physics/operator_spring.h>
+#include <vrrw_physics/drive_mode.h>
+#include <vrrw_physics/input_limits.h>
+#include <vrrw_physics/operator_input.h>
 #include <vrrw_physics/rigid_object.h>
+#include <vrrw_physics/robot_drives.h>
 #include <vrrw_physics/stable_pd.h>
 
 #include <Eigen/Geometry>
 #include <cstdint>
-#include <map>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,24 +18,14 @@
 class btBroadphaseInterface;
 struct btOverlapFilterCallback;
 class btCollisionDispatcher;
+class btCollisionShape;
 class btDefaultCollisionConfiguration;
 class btMultiBodyConstraintSolver;
 class btMultiBodyDynamicsWorld;
 class btRigidBody;
-class btCollisionShape;
-class btMultiBodyConstraint;
-struct btDefaultMotionState;
 
 namespace vrrw_physics
 {
-/// \brief Bad input to the world (unknown robot/joint/link, NaN, negative gains, wrong lengths);
-/// what() is one line naming the thing. The world is unchanged.
-class InputError : public std::invalid_argument
-{
-public:
-  using std::invalid_argument::invalid_argument;
-};
-
 /// \brief How joint drives are made implicit.
 enum class DriveScheme
 {
@@ -44,11 +34,15 @@ enum class DriveScheme
                ///< predict (contacts, pushes) meet a stiffness of only K*M/(M + h*(h*K + D))
 };
 
-/// \brief Simulation settings.
+/// \brief "constraint" or "stable_pd"; throws std::invalid_argument otherwise.
+DriveScheme parseDriveScheme(const std::string& text);
+
+/// \brief Simulation settings (PhysicsWorld refuses a dt that is not positive and negative timeouts).
 struct WorldOptions
 {
   DriveScheme drive_scheme = DriveScheme::Constraint;
-  double dt = 0.001;                                    ///< fixed step (s)
+  DriveMode mode = DriveMode::Rigid;  ///< every robot's arm at the start and after reset()
+  double dt = 0.001;                  ///< fixed step (s)
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);
   int solver_iterations = 30;        ///< most Gauss-Seidel sweeps per step
   int solver_inner_iterations = 5;  ///< sweeps over joint rows (drives, couplings, limits) per sweep
@@ -62,10 +56,15 @@ struct WorldOptions
   bool joint_space_dynamics = true;  ///< step robot velocities by qdd = M^-1 (tau - c) instead of Bullet's
                                      ///< articulated-body pass while a robot touches nothing
                                      ///< (MultiBodyWorld; equal up to rounding; ignored with bullet_reference)
+  bool floor = true;                 ///< a static floor under z = 0 that objects (not robot links) land on
   double link_friction = 1.0;
   double max_joint_speed = 50.0;     ///< guard: rad/s or m/s
   double max_object_speed = 20.0;    ///< guard: m/s
   int snapshot_interval = 100;       ///< steps between last-good states
+  int max_guard_trips = 3;           ///< guard trips with no good state between them before the world stops
+  double target_timeout = 0.1;       ///< s of simulated time without drive targets before a robot holds
+                                     ///< its last target positions at rest (0: never)
+  double hand_timeout = 0.5;         ///< s of simulated time without a pose before a hand is removed (0: never)
 };
 
 /// \brief Joint names (prefixed), positions, velocities and efforts of one robot.
@@ -77,7 +76,16 @@ struct JointStates
   std::vector<double> effort;
 };
 
-/// \brief Everything needed to put the world back: joints, objects, drive targets, time.
+/// \brief Two bodies touching after the last step.
+struct ContactPair
+{
+  std::string body_a;   ///< a robot link, an object or "hand/<id>"; body_a < body_b
+  std::string body_b;
+  double normal_force;  ///< N, summed over the pair's contact points
+  Eigen::Vector3d position;  ///< world; the points' mean weighted by their force
+};
+
+/// \brief Joints, objects and drive targets at one time: what a guard trip or reset() puts back.
 struct WorldState
 {
   double time = 0.0;
@@ -89,39 +97,48 @@ struct WorldState
 };
 
 /// \brief Every robot (one Featherstone multibody each) and object of a scene in one Bullet world,
-/// stepped at a fixed rate, with joint drives, operator springs, a kinematic hand and a guard that
-/// rejects non-finite or exploding steps.
+/// stepped at a fixed rate, with joint drives, operator input and a guard that rejects non-finite or
+/// exploding steps.
+///
+/// The guard restores the last good state, releases the operator's springs and hands (the usual cause)
+/// and reports once; after max_guard_trips trips with no good state between them the world stops
+/// (step() returns false without stepping) until reset().
 class PhysicsWorld
 {
 public:
-  /// \brief Builds the world of a scene: robots from scene.urdf and scene.robots (initial positions,
-  /// drive gains from each robot's config file and its gripper's), objects from scene.objects.
-  /// Throws std::runtime_error naming the robot, link, joint, object or file at fault.
+  /// \brief Builds the world of a scene: robots from scene.urdf and scene.robots (initial positions, drive
+  /// gains), objects from scene.objects. Throws std::runtime_error naming the robot, link, joint or object at
+  /// fault, among them anything not finite or outside kWorldExtent.
   explicit PhysicsWorld(const vrrw_scene::Scene& scene, const WorldOptions& options = WorldOptions());
   ~PhysicsWorld();
   PhysicsWorld(const PhysicsWorld&) = delete;
   PhysicsWorld& operator=(const PhysicsWorld&) = delete;
 
-  /// \brief Advances one fixed step. Returns false when the guard rejected it: the last good state
-  /// is restored and lastError() says why.
+  /// \brief Advances one fixed step. Returns false when the guard rejected it (lastError() says why) or
+  /// the world has stopped.
   bool step();
   double time() const { return time_; }
   std::uint64_t steps() const { return steps_; }
   const WorldOptions& options() const { return options_; }
   const std::string& lastError() const { return last_error_; }
+  /// \brief true after max_guard_trips trips in a row: nothing moves until reset().
+  bool stopped() const { return stopped_; }
+  /// \brief What happened since the last call that a person should hear of once: guard trips, robots whose
+  /// targets stopped arriving, hands removed for silence.
+  std::vector<std::string> takeReports();
 
   std::vector<std::string> robotNames() const;
   const ArticulatedRobot& robot(const std::string& name) const;
   JointStates jointStates(const std::string& robot) const;
 
-  /// \brief Drive targets by prefixed joint name; velocities empty means zero. Throws InputError.
+  /// \brief Drive targets of a robot (RobotDrives::setTargets). Throws InputError.
   void setDriveTargets(const std::string& robot, const std::vector<std::string>& joints,
-                       const std::vector<double>& positions, const std::vector<double>& velocities);
-  /// \brief Mode of the robot's arm joints (gripper joints keep their rigid gains). Throws InputError.
+                       const std::vector<double>& positions, const std::vector<double>& velocities,
+                       const std::vector<double>& efforts = {});
+  /// \brief Mode of the robot's arm joints; the arm holds where it is. Throws InputError.
   void setMode(const std::string& robot, DriveMode mode);
   DriveMode mode(const std::string& robot) const;
-  /// \brief Custom gains (the robot switches to Custom) for the listed joints, or, with `joints`
-  /// empty, for the arm joints in order. max_force empty keeps the limits. Throws InputError.
+  /// \brief Custom gains (RobotDrives::setGains). Throws InputError.
   void setGains(const std::string& robot, const std::vector<std::string>& joints, const std::vector<double>& stiffness,
                 const std::vector<double>& damping, const std::vector<double>& max_force);
   /// \brief Gains in effect for a joint. Throws InputError.
@@ -130,32 +147,24 @@ public:
 
   std::vector<std::string> objectNames() const;
   Eigen::Isometry3d objectPose(const std::string& object) const;
-  /// \brief Teleports an object (operator tool, not used for grasping). Throws InputError.
+  /// \brief Teleports a movable object, at rest. Throws InputError (unknown or fixed object, pose outside
+  /// the world).
   void setObjectPose(const std::string& object, const Eigen::Isometry3d& pose);
   /// \brief World pose of any robot link or object frame. Throws InputError.
   Eigen::Isometry3d framePose(const std::string& frame) const;
 
-  /// \brief Attaches (or replaces) operator spring `id` to a robot link or object. Throws InputError.
-  void attachSpring(const std::string& id, const OperatorSpring& spring);
-  /// \brief Moves the target of spring `id`. Throws InputError.
-  void moveSpring(const std::string& id, const Eigen::Isometry3d& target,
-                  const Eigen::Vector3d& velocity = Eigen::Vector3d::Zero());
-  void releaseSpring(const std::string& id);
+  /// \brief Springs, hands and grasp assists.
+  OperatorInput& operatorInput() { return *operator_; }
+  const OperatorInput& operatorInput() const { return *operator_; }
 
-  /// \brief Grasp assist (off unless asked for): welds `object` to the robot's TCP link where it is
-  /// now, or releases it. For scripted demos that must not drop anything; grasping tests run without.
-  void setGraspAssist(const std::string& robot, const std::string& object, bool on);
-  /// \brief "robot/object" of every active grasp assist.
-  std::vector<std::string> graspAssists() const;
-
-  /// \brief Places the kinematic hand (a sphere that pushes links and objects by contact); it is
-  /// created on first use and moves with the velocity implied by successive poses.
-  void setHandPose(const Eigen::Isometry3d& pose, double radius = 0.04);
-  void removeHand();
+  /// \brief Pairs of bodies in contact after the last step.
+  std::vector<ContactPair> contacts() const;
 
   WorldState snapshot() const;
+  /// \brief Puts joints, objects, drive targets, time and step count back as they were in `state`.
   void restore(const WorldState& state);
-  /// \brief Back to the initial state of the scene (time 0).
+  /// \brief Back to the start: initial state at time 0, the options' mode with the configured gains, gravity
+  /// compensation as configured; no springs, hands, grasp assists or force limits from targets; not stopped.
   void reset();
 
   btMultiBodyDynamicsWorld* bulletWorld() const { return world_.get(); }
@@ -166,25 +175,24 @@ private:
     vrrw_scene::Robot spec;
     std::unique_ptr<ArticulatedRobot> robot;
     std::unique_ptr<StablePd> stable_pd;
-    DriveGainTable table;
-    DriveMode mode = DriveMode::Rigid;
-    std::vector<bool> arm_joint;  ///< per joint of robot->joints()
+    std::unique_ptr<RobotDrives> drives;
     bool gravity_compensation = true;
   };
-  struct SpringEntry
-  {
-    std::string id;
-    OperatorSpring spring;
-  };
 
+  void createBulletWorld();
+  void addRobots(const vrrw_scene::Scene& scene);
+  void addObjects(const vrrw_scene::Scene& scene);
+  void addFloor();
+  void checkExtent() const;
+  void applyJointTorques();
   RobotEntry& entry(const std::string& robot);
   const RobotEntry& entry(const std::string& robot) const;
   RigidObject& object(const std::string& name) const;
-  void applyMode(RobotEntry& e);
-  void applySprings();
-  bool stateIsSane();
   bool robotInContact() const;
-  bool frameExists(const std::string& frame) const;
+  /// "" when every joint and object is finite and within the guard's speeds, else the first that is not.
+  std::string insaneState() const;
+  void recoverFrom(const std::string& why);
+  void restoreMotion(const WorldState& state);
 
   WorldOptions options_;
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config_;
@@ -195,15 +203,17 @@ private:
   std::unique_ptr<btMultiBodyDynamicsWorld> world_;
   std::vector<RobotEntry> robots_;
   std::vector<std::unique_ptr<RigidObject>> objects_;
-  std::vector<SpringEntry> springs_;
-  std::map<std::string, std::unique_ptr<btMultiBodyConstraint>> assists_;
-  std::unique_ptr<btCollisionShape> hand_shape_;
-  std::unique_ptr<btDefaultMotionState> hand_motion_;
-  std::unique_ptr<btRigidBody> hand_;
+  std::unique_ptr<btCollisionShape> floor_shape_;
+  std::unique_ptr<btRigidBody> floor_;
+  std::unique_ptr<OperatorInput> operator_;
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
   WorldState initial_;
   WorldState last_good_;
   std::string last_error_;
+  int trips_in_a_row_ = 0;
+  bool tripped_since_snapshot_ = false;
+  bool stopped_ = false;
+  std::vector<std::string> reports_;
 };
 }  // namespace vrrw_physics

@@ -12,6 +12,9 @@ class btDiscreteDynamicsWorld;
 
 namespace vrrw_physics
 {
+/// \brief Broadphase group of movable objects: the only bodies the floor collides with.
+constexpr int kMovableObjectGroup = 64;
+
 /// \brief A scene object as one Bullet rigid body (static when the object is fixed).
 ///
 /// The body frame sits at the centre of mass on the principal axes of inertia; collision shapes
@@ -25,6 +28,7 @@ public:
   RigidObject(const RigidObject&) = delete;
   RigidObject& operator=(const RigidObject&) = delete;
 
+  /// \brief Adds the body; a movable one joins kMovableObjectGroup besides Bullet's default group.
   void addToWorld(btDiscreteDynamicsWorld* world);
 
   const std::string& name() const { return name_; }

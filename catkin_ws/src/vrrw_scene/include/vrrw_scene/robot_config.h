@@ -11,4 +11,18 @@ namespace vrrw_scene
 /// Throws SceneError "file:line: acceleration_limits.joint: reason" for an unreadable file, a missing section
 /// or a value that is not a positive number.
 std::map<std::string, double> loadAccelerationLimits(const std::string& config_file, const std::string& prefix);
+
+/// \brief Fills robot.acceleration_limits and robot.drive_gains for every joint of robot.initial_positions
+/// from robot.config_file, gripper joints from robot.gripper_config_file when there is one:
+///
+///     acceleration_limits: {shoulder_pan_joint: 3.14, ...}            # rad/s^2 (m/s^2), every joint
+///     drives:                                                          # optional
+///       rigid: {stiffness: 1.0e5, damping: 8.0e4, max_force: 150}      # every joint of the file
+///       compliant: {stiffness: 0.0, damping: 30.0}
+///       elbow_joint: {rigid: {stiffness: 2.0e5}, compliant: {damping: 10.0}}   # one joint
+///
+/// Missing gain fields keep JointGains' defaults. A robot without config_file gets the default gains and no
+/// acceleration limits. Throws SceneError "file:line: field: reason" (a joint without a limit, a negative or
+/// non-numeric gain, stiffness and damping both 0, an unknown field, a drive for a joint the robot does not drive).
+void readRobotConfig(Robot& robot);
 }  // namespace vrrw_scene

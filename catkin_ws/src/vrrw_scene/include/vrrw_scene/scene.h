@@ -45,6 +45,21 @@ struct Object
   bool fixed = false;  ///< a table does not move
 };
 
+/// \brief Gains of one joint drive: effort = stiffness (q* - q) - damping (qd - qd*), |effort| <= max_force.
+struct DriveGains
+{
+  double stiffness = 0.0;  ///< N m/rad (N/m prismatic)
+  double damping = 0.0;    ///< N m s/rad (N s/m prismatic)
+  double max_force = 0.0;  ///< N m (N prismatic); 0: the joint's URDF effort limit
+};
+
+/// \brief A joint's drive gains in its two modes (`drives:` of urdf/config/<model>.yaml).
+struct JointGains
+{
+  DriveGains rigid{ 1e5, 8e4, 0.0 };       ///< holds the target; defaults: the paper's seed values
+  DriveGains compliant{ 0.0, 30.0, 0.0 };  ///< yields to pushes (free-drive)
+};
+
 /// \brief One robot of the cell; every link and joint name starts with `name + "_"`.
 struct Robot
 {
@@ -64,6 +79,9 @@ struct Robot
   /// \brief rad/s^2 (m/s^2 prismatic) of every movable joint, from config_file and the gripper's config;
   /// empty for a robot with its own description (it has no config).
   std::map<std::string, double> acceleration_limits;
+  /// \brief Drive gains of every movable joint that is not a mimic joint, from config_file (gripper joints
+  /// from gripper_config_file); JointGains' defaults where a config has no `drives` (or the robot no config).
+  std::map<std::string, JointGains> drive_gains;
 };
 
 /// \brief A cell expanded from its YAML: one combined URDF of all robots plus the object list.

@@ -2,8 +2,8 @@
 #include <iosfwd>
 #include <string>
 
-#include "vrrw_trajectory/joint_trajectory.h"
-#include "vrrw_trajectory/trajectory_error.h"
+#include <vrrw_trajectory/joint_trajectory.h>
+#include <vrrw_trajectory/trajectory_error.h>
 
 namespace vrrw_trajectory
 {
@@ -27,7 +27,8 @@ JointTrajectory readCsv(const std::string& path);
 /// \brief Reads CSV text from a stream; \a source names it in error messages.
 JointTrajectory readCsv(std::istream& in, const std::string& source);
 
-/// \brief Writes a trajectory to a CSV file; every point needs n positions and n velocities.
+/// \brief Writes a trajectory to a CSV file; every point needs n positions and n velocities. The file
+/// appears complete or not at all (writeWholeFile).
 void writeCsv(const std::string& path, const JointTrajectory& trajectory);
 
 /// \brief Writes CSV text to a stream; \a source names it in error messages.

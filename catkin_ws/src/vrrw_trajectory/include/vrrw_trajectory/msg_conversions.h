@@ -1,7 +1,7 @@
 #pragma once
 #include <trajectory_msgs/JointTrajectory.h>
 
-#include "vrrw_trajectory/joint_trajectory.h"
+#include <vrrw_trajectory/joint_trajectory.h>
 
 namespace vrrw_trajectory
 {

@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-#include "vrrw_trajectory/joint_trajectory.h"
+#include <vrrw_trajectory/joint_trajectory.h>
 
 namespace vrrw_dmp
 {

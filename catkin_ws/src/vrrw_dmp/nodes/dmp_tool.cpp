@@ -8,11 +8,12 @@
 #include <iostream>
 #include <sstream>
 
+#include <vrrw_dmp/dmp.h>
+#include <vrrw_dmp/dmp_error.h>
+#include <vrrw_dmp/dmp_yaml.h>
+#include <vrrw_trajectory/csv.h>
+
 #include "options.h"
-#include "vrrw_dmp/dmp.h"
-#include "vrrw_dmp/dmp_error.h"
-#include "vrrw_dmp/dmp_yaml.h"
-#include "vrrw_trajectory/csv.h"
 
 namespace
 {

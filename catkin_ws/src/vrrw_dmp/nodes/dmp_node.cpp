@@ -4,15 +4,15 @@
 #include <optional>
 
 #include <ros/ros.h>
+#include <vrrw_dmp/Learn.h>
+#include <vrrw_dmp/Plan.h>
+#include <vrrw_dmp/dmp.h>
+#include <vrrw_dmp/dmp_error.h>
+#include <vrrw_dmp/dmp_yaml.h>
+#include <vrrw_trajectory/csv.h>
+#include <vrrw_trajectory/msg_conversions.h>
 
 #include "bag_reader.h"
-#include <vrrw_trajectory/msg_conversions.h>
-#include "vrrw_dmp/Learn.h"
-#include "vrrw_dmp/Plan.h"
-#include "vrrw_dmp/dmp.h"
-#include "vrrw_dmp/dmp_error.h"
-#include "vrrw_dmp/dmp_yaml.h"
-#include "vrrw_trajectory/csv.h"
 
 namespace vrrw_dmp
 {

@@ -6,8 +6,9 @@
 #include <iostream>
 #include <random>
 
-#include "../cli/options.h"
-#include "vrrw_dmp/dmp.h"
+#include <vrrw_dmp/dmp.h>
+
+#include "options.h"
 
 namespace
 {
