@@ -1,6 +1,6 @@
-#include <vrrw_trajectory/msg_conversions.h>
 #include <vrrw_control/arm_action_server.h>
 #include <vrrw_control/msg_conversions.h>
+#include <vrrw_trajectory/msg_conversions.h>
 
 namespace vrrw_control
 {
@@ -12,7 +12,19 @@ int codeOf(Validation::Error e)
 {
   return e == Validation::Error::InvalidJoints ? Result::INVALID_JOINTS : Result::INVALID_GOAL;
 }
+
+const char* const kFreeDrive = "free-drive active";
 }  // namespace
+
+ros::NodeHandle sizedActionQueues(ros::NodeHandle& nh, const std::string& name, int size)
+{
+  for (const char* side : { "server", "client" })
+  {
+    nh.setParam(name + "/actionlib_" + side + "_sub_queue_size", size);
+    nh.setParam(name + "/actionlib_" + side + "_pub_queue_size", size);
+  }
+  return nh;
+}
 
 ArmActionServer::ArmActionServer(ros::NodeHandle& nh, ArmController& arm, const RobotHardware& hardware,
                                  Options options, std::unique_ptr<RealDriverRelay> relay, const RobotHardware* real)
@@ -22,7 +34,8 @@ ArmActionServer::ArmActionServer(ros::NodeHandle& nh, ArmController& arm, const 
   , origin_(options_.clock_origin)
   , relay_(std::move(relay))
   , real_(real)
-  , server_(nh, "arm_controller/follow_joint_trajectory", [this](GoalHandle gh) { onGoal(gh); },
+  , server_(sizedActionQueues(nh, "arm_controller/follow_joint_trajectory", options_.queue_size),
+            "arm_controller/follow_joint_trajectory", [this](GoalHandle gh) { onGoal(gh); },
             [this](GoalHandle gh) { onCancel(gh); }, false)
   , name_(nh.getNamespace() + "/arm_controller")
 {
@@ -55,47 +68,61 @@ void ArmActionServer::finish(int code, const std::string& message)
   phase_ = Phase::Idle;
 }
 
+std::pair<int, std::string> ArmActionServer::admissible(const control_msgs::FollowJointTrajectoryGoal& goal, const ros::Time& start,
+                                                        const ros::Time& now) const
+{
+  if (free_drive_)
+    return { Result::INVALID_GOAL, kFreeDrive };
+  if (!hw_.ready())
+    return { Result::INVALID_GOAL, hw_.fault() };
+  if (!goal.trajectory.points.empty() && start + goal.trajectory.points.back().time_from_start < now)
+    return { Result::OLD_HEADER_TIMESTAMP,
+             "trajectory ended " + std::to_string((now - start - goal.trajectory.points.back().time_from_start).toSec()) +
+                 " s ago (header.stamp in the past)" };
+  if (phase_ == Phase::Relaying)
+    return { Result::INVALID_GOAL, "a goal is executing on the real robot; cancel it first" };
+  return { Result::SUCCESSFUL, "" };
+}
+
 void ArmActionServer::onGoal(GoalHandle gh)
 {
   const auto goal = gh.getGoal();
   const ros::Time now = ros::Time::now();
-  if (!hw_.ready())
-    return reject(gh, Result::INVALID_GOAL, "no joint_states received for this robot yet");
+  const ros::Time start = goal->trajectory.header.stamp.isZero() ? now : goal->trajectory.header.stamp;
+  const auto [code, why] = admissible(*goal, start, now);
+  if (!why.empty())
+    return reject(gh, code, why);
   Tolerances tolerances = options_.defaults;
   const std::string bad = applyTolerances(goal->path_tolerance, goal->goal_tolerance,
                                           goal->goal_time_tolerance.toSec(), arm_.joints(), tolerances);
   if (!bad.empty())
     return reject(gh, Result::INVALID_GOAL, bad);
-  ros::Time start = goal->trajectory.header.stamp.isZero() ? now : goal->trajectory.header.stamp;
-  if (!goal->trajectory.points.empty() && start + goal->trajectory.points.back().time_from_start < now)
-    return reject(gh, Result::OLD_HEADER_TIMESTAMP,
-                  "trajectory ended " +
-                      std::to_string((now - start - goal->trajectory.points.back().time_from_start).toSec()) +
-                      " s ago (header.stamp in the past)");
-  start = std::max(start, now);
-  if (phase_ == Phase::Relaying)
-    return reject(gh, Result::INVALID_GOAL, "a goal is executing on the real robot; cancel it first");
+
+  const auto trajectory = vrrw_trajectory::fromMsg(goal->trajectory);
   const bool measured = real_ && real_->ready();
-  JointSample real_state(arm_.joints().size());
+  ArmController::Plan plan;
   if (measured)
+  {
+    JointSample real_state(arm_.joints().size());
     real_state.positions = realArm();
-  const Validation v = measured ? arm_.validator().validate(vrrw_trajectory::fromMsg(goal->trajectory), real_state) :
-                                  arm_.validate(vrrw_trajectory::fromMsg(goal->trajectory), toTime(now));
-  if (!v.ok())
-    return reject(gh, codeOf(v.error), v.message);
+    plan.validation = arm_.validator().validate(trajectory, real_state);
+    plan.start = toTime(std::max(start, now));
+  }
+  else
+    plan = arm_.plan(trajectory, toTime(start), toTime(now));
+  if (!plan.validation.ok())
+    return reject(gh, codeOf(plan.validation.error), plan.validation.message);
 
   if (phase_ != Phase::Idle)
   {
-    if (phase_ == Phase::Relaying)
-      relay_->cancel();
     Result r;
     r.error_string = "preempted by a newer goal";
     active_.setCanceled(r, r.error_string);
   }
   gh.setAccepted();
   if (measured)
-    arm_.adopt(real_state.positions);  // the preview starts where the real arm is
-  arm_.start(v, toTime(start), toTime(now), tolerances);
+    arm_.adopt(realArm());  // the preview starts where the real arm is
+  arm_.start(plan, tolerances, toTime(now));
   active_ = gh;
   phase_ = Phase::Simulating;
 }
@@ -112,6 +139,45 @@ void ArmActionServer::onCancel(GoalHandle gh)
   r.error_string = phase_ == Phase::Relaying ? "canceled; cancel forwarded to the real driver" : "canceled";
   active_.setCanceled(r, r.error_string);
   phase_ = Phase::Idle;
+}
+
+void ArmActionServer::preempt(const std::string& why)
+{
+  if (phase_ != Phase::Simulating && phase_ != Phase::AwaitingConfirmation)
+    return;
+  Result r;
+  r.error_string = why;
+  active_.setCanceled(r, why);
+  phase_ = Phase::Idle;
+}
+
+void ArmActionServer::suspend(const std::string& why)
+{
+  if (suspended_)
+    return;
+  suspended_ = true;
+  ROS_ERROR_STREAM(name_ << ": " << why);
+  if (phase_ == Phase::Simulating || phase_ == Phase::AwaitingConfirmation)
+    finish(Result::PATH_TOLERANCE_VIOLATED, "aborted: " + why);
+  arm_.release();
+}
+
+void ArmActionServer::setFreeDrive(bool active, const ros::Time& now)
+{
+  if (active == free_drive_)
+    return;
+  free_drive_ = active;
+  ROS_INFO_STREAM(name_ << ": free-drive " << (active ? "on" : "off"));
+  if (active && (phase_ == Phase::Simulating || phase_ == Phase::AwaitingConfirmation))
+    finish(Result::PATH_TOLERANCE_VIOLATED, std::string("aborted: ") + kFreeDrive);
+  if (hw_.measures())
+  {
+    // the compliant arm is wherever the operator put it: hold that, never an older target
+    arm_.holdMeasured();
+    arm_.followMeasured(active);
+  }
+  else if (arm_.moving())
+    arm_.stop(toTime(now));
 }
 
 bool ArmActionServer::onConfirm(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res)
@@ -176,6 +242,11 @@ void ArmActionServer::publishFeedback(const ros::Time& now, const ArmController:
 
 void ArmActionServer::update(const ros::Time& now)
 {
+  if (suspended_)
+  {
+    suspended_ = false;
+    ROS_INFO_STREAM(name_ << ": joint_states are back; holding the measured pose");
+  }
   if (real_ && real_->ready() && (phase_ == Phase::Idle || phase_ == Phase::Relaying))
     arm_.adopt(realArm());
   const ArmController::Cycle c = arm_.update(toTime(now));

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -7,9 +8,12 @@
 namespace vrrw_control
 {
 ArmController::ArmController(RobotHardware& hardware, const std::vector<std::string>& joints,
-                             TrajectoryValidator validator, std::vector<double> stop_deceleration)
-  : hw_(hardware), joints_(joints), validator_(std::move(validator)), stop_deceleration_(std::move(stop_deceleration))
+                             TrajectoryValidator validator, Options options)
+  : hw_(hardware), joints_(joints), validator_(std::move(validator)), options_(std::move(options))
 {
+  if (options_.stop_deceleration.size() != joints_.size())
+    throw std::invalid_argument("arm: " + std::to_string(options_.stop_deceleration.size()) +
+                                " stop decelerations for " + std::to_string(joints_.size()) + " joints");
   for (const auto& j : joints_)
   {
     index_.push_back(hw_.index(j));
@@ -28,10 +32,9 @@ void ArmController::holdCommand()
 
 JointSample ArmController::desiredAt(double time) const
 {
-  if (motion_ && (time >= motion_start_ || !stopping_))
-    return motion_->sample(time - motion_start_);
-  if (stopping_)
-    return stopping_->sample(time);
+  for (auto m = motions_.rbegin(); m != motions_.rend(); ++m)
+    if (m->start <= time)
+      return m->path->sample(time - m->start);
   return hold_;
 }
 
@@ -49,45 +52,70 @@ JointSample ArmController::actual() const
 
 void ArmController::adopt(const std::vector<double>& positions)
 {
-  motion_.reset();
-  stopping_.reset();
+  motions_.clear();
+  goal_ = false;
   hold_ = JointSample(joints_.size());
   hold_.positions = positions;
   started_ = true;
 }
 
-bool ArmController::moving() const { return motion_ || stopping_; }
+void ArmController::holdMeasured()
+{
+  adopt(actual().positions);
+}
+
+void ArmController::release()
+{
+  motions_.clear();
+  goal_ = false;
+  started_ = false;
+}
 
 JointSample ArmController::restState(double now) const
 {
-  const JointSample d = desiredAt(now);
-  const auto stop = makeStopTrajectory(joints_, d, stop_deceleration_);
+  const auto stop = makeStopTrajectory(joints_, desiredAt(now), options_.stop_deceleration);
   JointSample rest(joints_.size());
   rest.positions = stop.points.back().positions;
   return rest;
 }
 
-Validation ArmController::validate(const vrrw_trajectory::JointTrajectory& goal, double now) const
+ArmController::Plan ArmController::plan(const vrrw_trajectory::JointTrajectory& goal, double start_time,
+                                        double now) const
 {
-  return validator_.validate(goal, restState(now));
+  Plan p;
+  if (options_.splice)
+  {
+    p.start = std::max(start_time, now);
+    p.validation = validator_.splice(goal, desiredAt(p.start), p.start - start_time);
+    return p;
+  }
+  const auto stop = makeStopTrajectory(joints_, desiredAt(now), options_.stop_deceleration);
+  p.start = std::max({ start_time, now, now + stop.points.back().time });
+  p.validation = validator_.validate(goal, restState(now));
+  return p;
+}
+
+void ArmController::runFrom(double time, vrrw_trajectory::JointTrajectory path)
+{
+  motions_.erase(std::remove_if(motions_.begin(), motions_.end(), [time](const Motion& m) { return m.start >= time; }),
+                 motions_.end());
+  motions_.push_back({ std::make_shared<const TrajectoryInterpolator>(path), time });
+}
+
+void ArmController::start(const Plan& accepted, const Tolerances& tolerances, double now)
+{
+  if (!options_.splice)
+    stop(now);
+  runFrom(accepted.start, accepted.validation.executable);
+  goal_ = true;
+  goal_start_ = accepted.start;
+  tolerances_ = tolerances;
 }
 
 void ArmController::stop(double now)
 {
-  const JointSample d = desiredAt(now);
-  auto stop = makeStopTrajectory(joints_, d, stop_deceleration_);
-  for (auto& p : stop.points)
-    p.time += now;
-  stopping_ = std::make_unique<TrajectoryInterpolator>(stop);
-  motion_.reset();
-}
-
-void ArmController::start(const Validation& accepted, double start_time, double now, const Tolerances& tolerances)
-{
-  stop(now);
-  motion_ = std::make_unique<TrajectoryInterpolator>(accepted.executable);
-  motion_start_ = std::max(start_time, stopping_->endTime());
-  tolerances_ = tolerances;
+  runFrom(now, makeStopTrajectory(joints_, desiredAt(now), options_.stop_deceleration));
+  goal_ = false;
 }
 
 void ArmController::endGoal(Outcome outcome, const std::string& message, double time, Cycle& cycle)
@@ -97,10 +125,15 @@ void ArmController::endGoal(Outcome outcome, const std::string& message, double 
   cycle.goal_active = false;
   if (outcome == Outcome::Succeeded)
   {
-    hold_ = motion_->sample(motion_->endTime());
-    motion_.reset();
-    stopping_.reset();
+    hold_ = motions_.back().path->sample(motions_.back().path->endTime());
+    motions_.clear();
+    goal_ = false;
+    return;
   }
+  // a measured arm holds where it is (joint_trajectory_controller's hold position): after a stall or
+  // a frozen simulation the desired state may be far ahead, and the arm would jump there later
+  if (hw_.measures())
+    holdMeasured();
   else
     stop(time);
 }
@@ -125,8 +158,9 @@ std::string firstViolation(const std::vector<std::string>& joints, const std::ve
 void ArmController::checkTolerances(double t, Cycle& cycle)
 {
   const auto& tol = tolerances_;
-  const double now = t + motion_start_;
-  if (t <= motion_->endTime())
+  const double now = t + goal_start_;
+  const double end = motions_.back().path->endTime();
+  if (t <= end)
   {
     std::string why = firstViolation(joints_, cycle.error.positions, tol.path_position, "position error");
     if (why.empty())
@@ -140,7 +174,7 @@ void ArmController::checkTolerances(double t, Cycle& cycle)
     why = firstViolation(joints_, cycle.actual.velocities, tol.goal_velocity, "velocity");
   if (why.empty())
     endGoal(Outcome::Succeeded, "", now, cycle);
-  else if (t > motion_->endTime() + tol.goal_time)
+  else if (t > end + tol.goal_time)
     endGoal(Outcome::GoalToleranceViolated,
             why + " (goal tolerance) " + std::to_string(tol.goal_time) + " s after the end", now, cycle);
 }
@@ -151,10 +185,17 @@ ArmController::Cycle ArmController::update(double time)
   if (!started_)
     holdCommand();
   started_ = true;
-  if (stopping_ && !motion_ && time >= stopping_->endTime())
+  while (motions_.size() > 1 && motions_[1].start <= time)
+    motions_.erase(motions_.begin());
+  if (!goal_ && motions_.size() == 1 && time >= motions_.front().end())
   {
-    hold_ = stopping_->sample(stopping_->endTime());
-    stopping_.reset();
+    hold_ = motions_.front().path->sample(motions_.front().path->endTime());
+    motions_.clear();
+  }
+  if (follow_measured_ && motions_.empty() && hw_.measures())
+  {
+    hold_ = JointSample(joints_.size());
+    hold_.positions = actual().positions;
   }
   cycle.desired = desiredAt(time);
   cycle.actual = actual();
@@ -165,14 +206,13 @@ ArmController::Cycle ArmController::update(double time)
     cycle.error.velocities[j] = cycle.desired.velocities[j] - cycle.actual.velocities[j];
     cycle.error.accelerations[j] = cycle.desired.accelerations[j] - cycle.actual.accelerations[j];
   }
-  if (motion_)
+  if (goal_)
   {
     cycle.goal_active = true;
-    if (time >= motion_start_)
-    {
-      stopping_.reset();
-      checkTolerances(time - motion_start_, cycle);
-    }
+    if (time >= goal_start_)
+      checkTolerances(time - goal_start_, cycle);
+    if (cycle.outcome == Outcome::PathToleranceViolated || cycle.outcome == Outcome::GoalToleranceViolated)
+      cycle.desired = desiredAt(time);  // already this cycle's command holds
   }
   auto& cmd = hw_.command();
   for (size_t j = 0; j < joints_.size(); ++j)

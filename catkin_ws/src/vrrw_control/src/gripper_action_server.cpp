@@ -3,12 +3,14 @@
 namespace vrrw_control
 {
 GripperActionServer::GripperActionServer(ros::NodeHandle& nh, GripperController& gripper,
-                                         const ros::Time& clock_origin, bool allow_stalling)
+                                         const RobotHardware& hardware, const ros::Time& clock_origin,
+                                         bool allow_stalling, int queue_size)
   : gripper_(gripper)
+  , hw_(hardware)
   , origin_(clock_origin)
   , allow_stalling_(allow_stalling)
-  , server_(nh, "gripper_controller/gripper_cmd", [this](GoalHandle gh) { onGoal(gh); },
-            [this](GoalHandle gh) { onCancel(gh); }, false)
+  , server_(sizedActionQueues(nh, "gripper_controller/gripper_cmd", queue_size), "gripper_controller/gripper_cmd",
+            [this](GoalHandle gh) { onGoal(gh); }, [this](GoalHandle gh) { onCancel(gh); }, false)
 {
   server_.start();
 }
@@ -16,7 +18,7 @@ GripperActionServer::GripperActionServer(ros::NodeHandle& nh, GripperController&
 void GripperActionServer::onGoal(GoalHandle gh)
 {
   const auto goal = gh.getGoal();
-  const std::string bad = gripper_.check(goal->command.position);
+  const std::string bad = hw_.ready() ? gripper_.check(goal->command.position, goal->command.max_effort) : hw_.fault();
   if (!bad.empty())
   {
     gh.setRejected(control_msgs::GripperCommandResult(), bad);
@@ -26,7 +28,7 @@ void GripperActionServer::onGoal(GoalHandle gh)
   if (has_active_)
     active_.setCanceled(control_msgs::GripperCommandResult(), "preempted by a newer goal");
   gh.setAccepted();
-  gripper_.start(goal->command.position, toTime(ros::Time::now()));
+  gripper_.start(goal->command.position, toTime(ros::Time::now()), goal->command.max_effort);
   active_ = gh;
   has_active_ = true;
 }
@@ -37,6 +39,15 @@ void GripperActionServer::onCancel(GoalHandle gh)
     return;
   gripper_.stop(toTime(ros::Time::now()));
   active_.setCanceled(control_msgs::GripperCommandResult(), "canceled");
+  has_active_ = false;
+}
+
+void GripperActionServer::suspend(const std::string& why)
+{
+  gripper_.release();
+  if (!has_active_)
+    return;
+  active_.setAborted(control_msgs::GripperCommandResult(), "aborted: " + why);
   has_active_ = false;
 }
 

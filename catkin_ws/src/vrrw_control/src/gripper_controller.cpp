@@ -14,7 +14,7 @@ GripperController::GripperController(RobotHardware& hardware, const std::string&
   hold_ = hw_.command().positions[index_];
 }
 
-std::string GripperController::check(double position) const
+std::string GripperController::check(double position, double max_effort) const
 {
   std::ostringstream why;
   if (!std::isfinite(position))
@@ -22,11 +22,17 @@ std::string GripperController::check(double position) const
   else if (position < options_.min_position || position > options_.max_position)
     why << "joint " << joint_ << ": position " << position << " outside limits [" << options_.min_position << ", "
         << options_.max_position << "]";
+  else if (!std::isfinite(max_effort) || max_effort < 0.0)
+    why << "max_effort " << max_effort << ": must be a finite grip force >= 0 N (0: the default)";
+  else if (options_.max_grip_force > 0.0 && max_effort > options_.max_grip_force)
+    why << "max_effort " << max_effort << " N exceeds the gripper's rated grip force " << options_.max_grip_force
+        << " N";
   return why.str();
 }
 
-void GripperController::start(double position, double now)
+void GripperController::start(double position, double now, double max_effort)
 {
+  effort_limit_ = max_effort > 0.0 && options_.lever_arm > 0.0 ? max_effort * options_.lever_arm : 0.0;
   const double from = motion_ ? motion_->sample(now - start_time_).positions[0] : hold_;
   vrrw_trajectory::JointTrajectory move;
   move.joint_names = { joint_ };
@@ -53,6 +59,13 @@ void GripperController::stop(double now)
   active_ = false;
 }
 
+void GripperController::release()
+{
+  motion_.reset();
+  active_ = false;
+  started_ = false;
+}
+
 GripperController::Cycle GripperController::update(double time)
 {
   Cycle c;
@@ -62,6 +75,7 @@ GripperController::Cycle GripperController::update(double time)
   const double commanded = motion_ ? motion_->sample(time - start_time_).positions[0] : hold_;
   hw_.command().positions[index_] = commanded;
   hw_.command().velocities[index_] = motion_ ? motion_->sample(time - start_time_).velocities[0] : 0.0;
+  hw_.effortLimits()[index_] = effort_limit_;
   c.position = hw_.state().positions[index_];
   c.effort = hw_.efforts()[index_];
   if (!active_)

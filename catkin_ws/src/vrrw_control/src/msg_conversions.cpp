@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <vrrw_control/msg_conversions.h>
 
 namespace vrrw_control
@@ -25,14 +27,23 @@ double merge(double requested, double fallback)
 bool apply(const std::vector<control_msgs::JointTolerance>& given, const std::vector<std::string>& joints,
            std::vector<double>& position, std::vector<double>& velocity, std::string& error, const char* kind)
 {
-  for (const auto& t : given)
+  for (size_t i = 0; i < given.size(); ++i)
   {
+    const auto& t = given[i];
+    const std::string field = std::string(kind) + "_tolerance[" + std::to_string(i) + "]";
     const auto it = std::find(joints.begin(), joints.end(), t.name);
     if (it == joints.end())
     {
-      error = std::string(kind) + " tolerance names joint " + t.name + ", not a joint of this controller";
+      error = field + ": joint " + t.name + " is not a joint of this controller";
       return false;
     }
+    for (const auto& [what, value] : { std::pair{ "position", t.position }, std::pair{ "velocity", t.velocity },
+                                        std::pair{ "acceleration", t.acceleration } })
+      if (!std::isfinite(value))
+      {
+        error = field + " (joint " + t.name + "): " + what + " is not finite";
+        return false;
+      }
     const size_t j = static_cast<size_t>(it - joints.begin());
     position[j] = merge(t.position, position[j]);
     velocity[j] = merge(t.velocity, velocity[j]);
@@ -45,6 +56,12 @@ std::string applyTolerances(const std::vector<control_msgs::JointTolerance>& pat
                             const std::vector<control_msgs::JointTolerance>& goal, double goal_time,
                             const std::vector<std::string>& joints, Tolerances& tol)
 {
+  if (!std::isfinite(goal_time) || goal_time < 0.0)
+  {
+    std::ostringstream why;
+    why << "goal_time_tolerance " << goal_time << " s: must be >= 0 (0: the default)";
+    return why.str();
+  }
   std::string error;
   if (!apply(path, joints, tol.path_position, tol.path_velocity, error, "path") ||
       !apply(goal, joints, tol.goal_position, tol.goal_velocity, error, "goal"))

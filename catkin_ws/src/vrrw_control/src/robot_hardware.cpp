@@ -4,7 +4,11 @@
 namespace vrrw_control
 {
 RobotHardware::RobotHardware(std::vector<std::string> joints)
-  : joints_(std::move(joints)), state_(joints_.size()), command_(joints_.size()), efforts_(joints_.size(), 0.0)
+  : joints_(std::move(joints))
+  , state_(joints_.size())
+  , command_(joints_.size())
+  , efforts_(joints_.size(), 0.0)
+  , effort_limits_(joints_.size(), 0.0)
 {
 }
 

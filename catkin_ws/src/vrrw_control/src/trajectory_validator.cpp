@@ -2,6 +2,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <vrrw_control/splice_segment.h>
 #include <vrrw_control/trajectory_interpolator.h>
 #include <vrrw_control/trajectory_validator.h>
 
@@ -30,6 +31,25 @@ std::string fmt(double x)
   s.precision(6);
   s << x;
   return s.str();
+}
+
+/// The joint whose value differs most between \a a and \a b.
+size_t farthestJoint(const std::vector<double>& a, const std::vector<double>& b)
+{
+  size_t worst = 0;
+  for (size_t j = 1; j < a.size(); ++j)
+    if (std::abs(a[j] - b[j]) > std::abs(a[worst] - b[worst]))
+      worst = j;
+  return worst;
+}
+
+vrrw_trajectory::TrajectoryPoint restAt(const std::vector<double>& positions)
+{
+  vrrw_trajectory::TrajectoryPoint rest;
+  rest.positions = positions;
+  rest.velocities.assign(positions.size(), 0.0);
+  rest.accelerations.assign(positions.size(), 0.0);
+  return rest;
 }
 
 bool allFinite(const std::vector<double>& values, size_t& bad)
@@ -126,7 +146,7 @@ bool TrajectoryValidator::checkPoints(const vrrw_trajectory::JointTrajectory& go
   return true;
 }
 
-bool TrajectoryValidator::checkInterpolant(int first_goal_point, Validation& v) const
+bool TrajectoryValidator::checkInterpolant(int index_shift, Validation& v) const
 {
   const auto& traj = v.executable;
   const TrajectoryInterpolator interp(traj);
@@ -134,7 +154,7 @@ bool TrajectoryValidator::checkInterpolant(int first_goal_point, Validation& v) 
   for (size_t i = 1; i < traj.points.size(); ++i)
   {
     const double t0 = traj.points[i - 1].time, t1 = traj.points[i].time;
-    const int goal_point = static_cast<int>(i) - first_goal_point;
+    const int goal_point = static_cast<int>(i) - index_shift;
     for (int s = 1; s < options_.samples_per_segment; ++s)
     {
       const JointSample x = interp.sample(t0 + (t1 - t0) * s / options_.samples_per_segment);
@@ -159,26 +179,11 @@ bool TrajectoryValidator::checkInterpolant(int first_goal_point, Validation& v) 
   return true;
 }
 
-double TrajectoryValidator::blendDuration(const JointSample& from, const vrrw_trajectory::TrajectoryPoint& to) const
+bool TrajectoryValidator::checkAndReorder(const vrrw_trajectory::JointTrajectory& goal, Validation& v) const
 {
-  double duration = 0.1;
-  for (size_t j = 0; j < limits_.size(); ++j)
-  {
-    const double dq = std::abs(to.positions[j] - from.positions[j]);
-    duration = std::max(duration, 1.5 * dq / limits_[j].max_velocity);
-    if (std::isfinite(limits_[j].max_acceleration))
-      duration = std::max(duration, std::sqrt(6.0 * dq / limits_[j].max_acceleration));
-  }
-  return options_.blend_margin * duration;
-}
-
-Validation TrajectoryValidator::validate(const vrrw_trajectory::JointTrajectory& goal, const JointSample& current) const
-{
-  Validation v;
   std::vector<size_t> order;
   if (!checkJoints(goal, v, order) || !checkPoints(goal, order, v))
-    return v;
-
+    return false;
   auto& out = v.executable;
   for (const auto& l : limits_)
     out.joint_names.push_back(l.name);
@@ -196,39 +201,94 @@ Validation TrajectoryValidator::validate(const vrrw_trajectory::JointTrajectory&
     }
     out.points.push_back(q);
   }
+  return true;
+}
 
-  const auto& first = out.points.front();
-  size_t worst = 0;
-  double worst_error = -1.0;
-  for (size_t j = 0; j < limits_.size(); ++j)
-  {
-    const double e = std::abs(first.positions[j] - current.positions[j]);
-    if (e > worst_error)
-      worst_error = e, worst = j;
-  }
-  vrrw_trajectory::TrajectoryPoint rest;
-  rest.positions = current.positions;
-  rest.velocities.assign(limits_.size(), 0.0);
-  rest.accelerations.assign(limits_.size(), 0.0);
+Validation TrajectoryValidator::validate(const vrrw_trajectory::JointTrajectory& goal, const JointSample& current) const
+{
+  Validation v;
+  if (!checkAndReorder(goal, v))
+    return v;
+  auto& out = v.executable;
+  const size_t worst = farthestJoint(out.points.front().positions, current.positions);
+  const double worst_error = std::abs(out.points.front().positions[worst] - current.positions[worst]);
   if (worst_error > options_.start_tolerance)
   {
-    if (!options_.insert_blend)
-    {
-      reject(v, Validation::Error::InvalidGoal, 0, limits_[worst].name,
-             "starts " + fmt(worst_error) + " from the current position " + fmt(current.positions[worst]) +
-                 " (start tolerance " + fmt(options_.start_tolerance) + ")");
-      return v;
-    }
-    const double shift = blendDuration(current, first) - first.time;
-    if (shift > 0.0)
-      for (auto& p : out.points)
-        p.time += shift;
-    v.blended = true;
+    reject(v, Validation::Error::InvalidGoal, 0, limits_[worst].name,
+           "starts " + fmt(worst_error) + " from the current position " + fmt(current.positions[worst]) +
+               " (start tolerance " + fmt(options_.start_tolerance) + ")");
+    return v;
   }
   const bool prepend = out.points.front().time > 0.0;
   if (prepend)
-    out.points.insert(out.points.begin(), rest);
+    out.points.insert(out.points.begin(), restAt(current.positions));
   checkInterpolant(prepend ? 1 : 0, v);
+  return v;
+}
+
+size_t TrajectoryValidator::firstKeptPoint(const std::vector<vrrw_trajectory::TrajectoryPoint>& points,
+                                           const JointSample& current, double elapsed, bool& own_segment) const
+{
+  const bool at_rest =
+      std::all_of(current.velocities.begin(), current.velocities.end(), [](double qd) { return qd == 0.0; });
+  const auto& first = points.front().positions;
+  const size_t worst = farthestJoint(first, current.positions);
+  const bool starts_here = std::abs(first[worst] - current.positions[worst]) <= options_.start_tolerance;
+  own_segment = false;
+  if (at_rest && !starts_here)
+    return 0;
+  size_t kept = 0;
+  while (kept + 1 < points.size() && points[kept].time <= elapsed)
+    ++kept;
+  // a goal that starts where the resting arm is keeps the timing of its own first segment
+  own_segment = at_rest && kept == 1 && points[0].time <= elapsed && points[1].time > elapsed;
+  return kept;
+}
+
+Validation TrajectoryValidator::splice(const vrrw_trajectory::JointTrajectory& goal, const JointSample& current,
+                                       double elapsed) const
+{
+  Validation v;
+  if (!checkAndReorder(goal, v))
+    return v;
+  auto& points = v.executable.points;
+  bool own_segment = false;
+  const size_t first = firstKeptPoint(points, current, elapsed, own_segment);
+  points.erase(points.begin(), points.begin() + static_cast<long>(first));
+
+  // the splice segment ends in the first kept point (splice_segment.h); a point of positions only is
+  // reached at rest, by a quintic, rather than by a line with a velocity step
+  auto& target = points.front();
+  if (target.velocities.empty())
+  {
+    target.velocities.assign(limits_.size(), 0.0);
+    target.accelerations.assign(limits_.size(), 0.0);
+  }
+  const auto order = target.accelerations.empty() ? SplineSegment::Order::Cubic : SplineSegment::Order::Quintic;
+  JointSample end(limits_.size());
+  end.positions = target.positions;
+  end.velocities = target.velocities;
+  if (!target.accelerations.empty())
+    end.accelerations = target.accelerations;
+  const double own = std::max(target.time - elapsed, kShortestSplice);
+  const double duration = own_segment ? own : shortestSplice(order, current, end, own, limits_);
+  if (!std::isfinite(duration))
+  {
+    const SpliceCheck why = checkSplice(order, current, end, kLongestSplice, limits_);
+    reject(v, Validation::Error::InvalidGoal, static_cast<int>(first), why.joint,
+           "cannot be joined from the current state within the limits: " + why.reason);
+    return v;
+  }
+  v.blended = duration > own;
+  const double shift = duration - target.time;  // the first kept point lands at the end of the splice
+  for (auto& p : points)
+    p.time += shift;
+  vrrw_trajectory::TrajectoryPoint from;
+  from.positions = current.positions;
+  from.velocities = current.velocities;
+  from.accelerations = current.accelerations;
+  points.insert(points.begin(), from);
+  checkInterpolant(1 - static_cast<int>(first), v);
   return v;
 }
 }  // namespace vrrw_control

@@ -1,7 +1,9 @@
 #pragma once
 // Helpers shared by the node tests: a joint_states recorder and goal builders.
 #include <control_msgs/FollowJointTrajectoryAction.h>
+#include <iostream>
 #include <mutex>
+#include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
 
@@ -104,5 +106,18 @@ inline void finiteDifferences(const std::vector<sensor_msgs::JointState>& run, d
       }
     }
   }
+}
+
+/// Prints the largest finite-difference velocity and acceleration of a run and expects them within the
+/// limits (5 % on the acceleration for the differencing of jittered stamps).
+inline void expectWithinLimits(const std::vector<sensor_msgs::JointState>& run, const std::string& what,
+                               double velocity_limit, double acceleration_limit)
+{
+  double vmax, amax;
+  finiteDifferences(run, vmax, amax);
+  std::cout << what << ": " << run.size() << " samples, max |qd| " << vmax << " rad/s, max |qdd| " << amax
+            << " rad/s^2" << std::endl;
+  EXPECT_LE(vmax, velocity_limit * 1.01) << what;
+  EXPECT_LE(amax, acceleration_limit * 1.05) << what;
 }
 }  // namespace vrrw_control_test

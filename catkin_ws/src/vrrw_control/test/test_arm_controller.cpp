@@ -1,64 +1,19 @@
 #include <cmath>
 #include <gtest/gtest.h>
-#include <vrrw_control/arm_controller.h>
-#include <vrrw_control/fake_robot.h>
 
-using namespace vrrw_control;
+#include "arm_fixture.h"
 
-namespace
-{
-std::vector<JointLimits> limits(const std::vector<std::string>& names)
-{
-  std::vector<JointLimits> l(names.size());
-  for (size_t j = 0; j < names.size(); ++j)
-  {
-    l[j].name = names[j];
-    l[j].max_velocity = 2.0;
-    l[j].max_acceleration = 4.0;
-  }
-  return l;
-}
-
-vrrw_trajectory::JointTrajectory ramp(const std::vector<std::string>& names, double to, double duration)
-{
-  vrrw_trajectory::JointTrajectory g;
-  g.joint_names = names;
-  vrrw_trajectory::TrajectoryPoint a, b;
-  a.positions.assign(names.size(), 0.0);
-  a.velocities.assign(names.size(), 0.0);
-  b = a;
-  b.positions.assign(names.size(), to);
-  b.time = duration;
-  g.points = { a, b };
-  return g;
-}
-
-/// Follows the command one cycle late and lags by a fixed offset on the first joint.
-class LaggingRobot : public RobotHardware
-{
-public:
-  LaggingRobot(std::vector<std::string> j, double offset) : RobotHardware(std::move(j)), offset_(offset) {}
-  void read(double, double) override {}
-  void write(double, double) override
-  {
-    state_ = command_;
-    state_.positions[0] -= offset_;
-  }
-
-private:
-  double offset_;
-};
-}  // namespace
+using namespace vrrw_control_test;
 
 TEST(ArmController, FakeRobotFollowsTheInterpolantExactly)
 {
   const std::vector<std::string> names = { "r_a", "r_b" };
   FakeRobot robot(names);
-  ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), { 4.0, 4.0 });
-  const auto v = arm.validate(ramp(names, 1.0, 2.0), 0.0);
-  ASSERT_TRUE(v.ok()) << v.message;
-  arm.start(v, 0.5, 0.0, Tolerances::uniform(2, 0.0, 0.01, 0.0, 0.5));
-  const TrajectoryInterpolator reference(v.executable);
+  ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), options(2));
+  const auto plan = arm.plan(ramp(names, 1.0, 2.0), 0.5, 0.0);  // starts at 0.5 s
+  ASSERT_TRUE(plan.validation.ok()) << plan.validation.message;
+  arm.start(plan, Tolerances::uniform(2, 0.0, 0.01, 0.0, 0.5), 0.0);
+  const TrajectoryInterpolator reference(ramp(names, 1.0, 2.0));
   ArmController::Outcome outcome = ArmController::Outcome::None;
   double max_error = 0.0;
   for (int k = 0; k <= 400 && outcome == ArmController::Outcome::None; ++k)
@@ -80,7 +35,7 @@ TEST(ArmController, HoldsTheFirstMeasuredStateOfALateHardware)
 {
   const std::vector<std::string> names = { "r_a", "r_b" };
   FakeRobot robot(names);
-  ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), { 4.0, 4.0 });
+  ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), options(2));
   robot.reset({ 0.7, -1.2 });  // a physics robot reports its state only after construction
   const auto c = arm.update(0.0);
   EXPECT_EQ(c.desired.positions, (std::vector<double>{ 0.7, -1.2 }));
@@ -93,12 +48,12 @@ TEST(ArmController, PathAndGoalTolerancesAbort)
   for (int mode = 0; mode < 2; ++mode)
   {
     LaggingRobot robot(names, 0.05);
-    ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), { 4.0 });
-    const auto v = arm.validate(ramp(names, 0.5, 1.0), 0.0);
-    ASSERT_TRUE(v.ok());
+    ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), options(1));
+    const auto plan = arm.plan(ramp(names, 0.5, 1.0), 0.0, 0.0);
+    ASSERT_TRUE(plan.validation.ok());
     const auto tol =
         mode == 0 ? Tolerances::uniform(1, 0.02, 0.0, 0.0, 0.0) : Tolerances::uniform(1, 0.0, 0.01, 0.0, 0.3);
-    arm.start(v, 0.0, 0.0, tol);
+    arm.start(plan, tol, 0.0);
     ArmController::Cycle c;
     double end = 0.0;
     for (int k = 0; k < 300 && c.outcome == ArmController::Outcome::None; ++k)
@@ -126,10 +81,10 @@ TEST(ArmController, StopDeceleratesSmoothly)
 {
   const std::vector<std::string> names = { "r_a" };
   FakeRobot robot(names);
-  ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), { 4.0 });
-  const auto v = arm.validate(ramp(names, 2.0, 2.0), 0.0);
-  ASSERT_TRUE(v.ok()) << v.message;
-  arm.start(v, 0.0, 0.0, Tolerances::uniform(1, 0.0, 0.0, 0.0, 0.0));
+  ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), options(1));
+  const auto plan = arm.plan(ramp(names, 2.0, 2.0), 0.0, 0.0);
+  ASSERT_TRUE(plan.validation.ok()) << plan.validation.message;
+  arm.start(plan, noTolerances(1), 0.0);
   double previous_q = 0.0, previous_v = 0.0, max_step = 0.0, max_dv = 0.0;
   const double dt = 0.001;
   for (int k = 0; k < 2000; ++k)
@@ -152,21 +107,22 @@ TEST(ArmController, StopDeceleratesSmoothly)
   EXPECT_LT(previous_q, 2.0);
 }
 
-TEST(ArmController, PreemptionStopsThenStartsFromRest)
+TEST(ArmController, StrictPreemptionStopsThenStartsFromRest)
 {
   const std::vector<std::string> names = { "r_a" };
   FakeRobot robot(names);
-  ValidationOptions o;
-  o.insert_blend = true;
-  ArmController arm(robot, names, TrajectoryValidator(limits(names), o), { 4.0 });
-  arm.start(arm.validate(ramp(names, 2.0, 2.0), 0.0), 0.0, 0.0, Tolerances::uniform(1, 0, 0, 0, 0));
+  ArmController arm(robot, names, TrajectoryValidator(limits(names), {}), options(1, false));
+  arm.start(arm.plan(ramp(names, 2.0, 2.0), 0.0, 0.0), noTolerances(1), 0.0);
   double t = 0.0;
   for (; t < 1.0; t += 0.001)
     arm.update(t), robot.write(t, 0.001);
-  const auto second = arm.validate(ramp(names, 0.0, 1.0), t);  // back to zero, blended from the rest state
-  ASSERT_TRUE(second.ok()) << second.message;
-  EXPECT_GT(second.executable.points.front().positions[0], robot.state().positions[0]);
-  arm.start(second, t, t, Tolerances::uniform(1, 0, 0, 0, 0));
+  // the strict gate checks the goal against the rest state after the stop: 1.0 s at 1.5 rad/s, 4 rad/s^2
+  const double rest = robot.state().positions[0] + 0.5 * 1.5 * 1.5 / 4.0;
+  auto from_rest = ramp(names, 0.0, 1.5, rest);
+  const auto second = arm.plan(from_rest, t, t);
+  ASSERT_TRUE(second.validation.ok()) << second.validation.message;
+  EXPECT_NEAR(second.start - t, 1.5 / 4.0, 1e-3);  // after the stop
+  arm.start(second, noTolerances(1), t);
   double previous_v = robot.state().velocities[0], max_dv = 0.0;
   ArmController::Outcome outcome = ArmController::Outcome::None;
   for (; t < 6.0 && outcome == ArmController::Outcome::None; t += 0.001)

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <gtest/gtest.h>
 #include <vrrw_control/fake_robot.h>
 #include <vrrw_control/gripper_controller.h>
@@ -64,4 +65,23 @@ TEST(GripperController, RejectsOutOfRange)
   GripperController g(hw, "g_finger_joint", {});
   EXPECT_NE(g.check(0.9).find("outside limits"), std::string::npos);
   EXPECT_TRUE(g.check(0.5).empty());
+}
+
+TEST(GripperController, MaxEffortBecomesTheActuatedJointsDriveLimit)
+{
+  FakeRobot hw({ "g_finger_joint" });
+  GripperOptions o;
+  o.lever_arm = 0.0182;  // robotiq_2f_85.yaml
+  o.max_grip_force = 235.0;
+  GripperController g(hw, "g_finger_joint", o);
+  EXPECT_TRUE(g.check(0.5, 100.0).empty());
+  g.start(0.5, 0.0, 100.0);
+  g.update(0.01);
+  EXPECT_NEAR(hw.effortLimits()[0], 1.82, 1e-12);
+  g.start(0.2, 1.0, 0.0);  // 0: the configured limit again
+  g.update(1.01);
+  EXPECT_EQ(hw.effortLimits()[0], 0.0);
+  EXPECT_EQ(g.check(0.5, 300.0), "max_effort 300 N exceeds the gripper's rated grip force 235 N");
+  EXPECT_EQ(g.check(0.5, -1.0), "max_effort -1: must be a finite grip force >= 0 N (0: the default)");
+  EXPECT_NE(g.check(0.5, std::nan("")).find("max_effort nan"), std::string::npos);
 }

@@ -1,39 +1,89 @@
-// Node test (rostest, real master): physics mode with vrrw_physics' physics_node. The gripper
-// closes on a fixed block between its fingers and reports stalled; opening reaches its goal.
+// Node test (rostest, real master): physics mode with vrrw_physics' physics_node. The gripper closes
+// on a fixed block between its fingers and reports stalled; GripperCommand max_effort bounds the pad
+// force measured by the physics node's contacts; opening reaches its goal.
 #include <actionlib/client/simple_action_client.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <gtest/gtest.h>
+#include <mutex>
 #include <ros/ros.h>
+#include <vrrw_physics/Contacts.h>
 
 using GripperClient = actionlib::SimpleActionClient<control_msgs::GripperCommandAction>;
 using State = actionlib::SimpleClientGoalState;
 
-TEST(PhysicsGrasp, ClosingOnABlockStallsOpeningReachesTheGoal)
+namespace
 {
+/// Normal force of the block on the left and on the right finger links, from /physics/contacts.
+class PadForces
+{
+public:
+  explicit PadForces(ros::NodeHandle& nh) : sub_(nh.subscribe("/physics/contacts", 10, &PadForces::onContacts, this)) {}
+  std::pair<double, double> latest()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return forces_;
+  }
+
+private:
+  void onContacts(const vrrw_physics::Contacts& msg)
+  {
+    std::pair<double, double> forces{ 0.0, 0.0 };
+    for (const auto& c : msg.contacts)
+    {
+      const std::string& link = c.body_a == "block" ? c.body_b : c.body_a;
+      if (c.body_a != "block" && c.body_b != "block")
+        continue;
+      (link.rfind("ur5e_left_", 0) == 0 ? forces.first : forces.second) += c.normal_force;
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    forces_ = forces;
+  }
+  ros::Subscriber sub_;
+  std::mutex mutex_;
+  std::pair<double, double> forces_;
+};
+
+control_msgs::GripperCommandResult command(GripperClient& gripper, double position, double max_effort)
+{
+  control_msgs::GripperCommandGoal g;
+  g.command.position = position;
+  g.command.max_effort = max_effort;
+  gripper.sendGoal(g);
+  EXPECT_TRUE(gripper.waitForResult(ros::Duration(10.0)));
+  return *gripper.getResult();
+}
+}  // namespace
+
+TEST(PhysicsGrasp, ClosingOnABlockStallsWithThePadForceOfMaxEffort)
+{
+  ros::NodeHandle nh;
+  PadForces pads(nh);
   GripperClient gripper("/ur5e/gripper_controller/gripper_cmd", true);
   ASSERT_TRUE(gripper.waitForServer(ros::Duration(20.0)));
   ros::Duration(0.5).sleep();
-  control_msgs::GripperCommandGoal g;
-  g.command.position = 0.8;  // fully closed without the block
-  g.command.max_effort = 50.0;
-  gripper.sendGoal(g);
-  ASSERT_TRUE(gripper.waitForResult(ros::Duration(10.0)));
-  const auto closed = *gripper.getResult();
-  std::cout << "close on block: state " << gripper.getState().toString() << ", position " << closed.position
-            << ", stalled " << int(closed.stalled) << ", reached_goal " << int(closed.reached_goal) << std::endl;
-  EXPECT_EQ(gripper.getState(), State::SUCCEEDED);
-  EXPECT_TRUE(closed.stalled);
-  EXPECT_FALSE(closed.reached_goal);
-  EXPECT_GT(closed.position, 0.1);
-  EXPECT_LT(closed.position, 0.7);
-
-  g.command.position = 0.1;  // away from the joint's stop at 0
-  gripper.sendGoal(g);
-  ASSERT_TRUE(gripper.waitForResult(ros::Duration(10.0)));
-  std::cout << "open: position " << gripper.getResult()->position << std::endl;
-  EXPECT_EQ(gripper.getState(), State::SUCCEEDED);
-  EXPECT_TRUE(gripper.getResult()->reached_goal);
-  EXPECT_FALSE(gripper.getResult()->stalled);
+  for (const double force : { 20.0, 40.0 })
+  {
+    const auto closed = command(gripper, 0.8, force);  // 0.8: fully closed without the block
+    EXPECT_EQ(gripper.getState(), State::SUCCEEDED);
+    EXPECT_TRUE(closed.stalled);
+    EXPECT_FALSE(closed.reached_goal);
+    EXPECT_GT(closed.position, 0.1);
+    EXPECT_LT(closed.position, 0.7);
+    ros::Duration(0.5).sleep();  // the squeeze settles while the gripper holds the goal's limit
+    const auto [left, right] = pads.latest();
+    // the fixed block takes the difference of the two pads; a free object would feel their mean on both
+    const double grip = 0.5 * (left + right);
+    std::cout << "max_effort " << force << " N: stalled at " << closed.position << " rad, pad forces " << left
+              << " N (left), " << right << " N (right), grip " << grip << " N" << std::endl;
+    EXPECT_GT(std::min(left, right), 0.0) << "one pad short of the block";
+    EXPECT_NEAR(grip, force, 0.15 * force);
+    command(gripper, 0.1, 0.0);  // open again, away from the joint's stop at 0
+    EXPECT_EQ(gripper.getState(), State::SUCCEEDED);
+    EXPECT_TRUE(gripper.getResult()->reached_goal);
+    EXPECT_FALSE(gripper.getResult()->stalled);
+  }
+  command(gripper, 0.5, 300.0);
+  EXPECT_EQ(gripper.getState(), State::REJECTED);
 }
 
 int main(int argc, char** argv)

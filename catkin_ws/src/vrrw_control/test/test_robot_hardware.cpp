@@ -12,11 +12,14 @@ namespace
 class StubLink : public DriveLink
 {
 public:
-  void sendTargets(const std::vector<std::string>&, const JointSample& targets, double time) override
+  void sendTargets(const std::vector<std::string>&, const JointSample& targets, const std::vector<double>& limits,
+                   double time) override
   {
     sent.push_back(targets);
+    sent_limits.push_back(limits);
     last_time = time;
   }
+  double stateAge() const override { return age; }
   bool latestState(const std::vector<std::string>&, JointSample& state, std::vector<double>& efforts) override
   {
     if (!measured)
@@ -26,7 +29,9 @@ public:
     return true;
   }
   std::vector<JointSample> sent;
+  std::vector<std::vector<double>> sent_limits;
   std::unique_ptr<JointSample> measured;
+  double age = 0.0;
   double last_time = -1.0;
 };
 
@@ -67,6 +72,40 @@ TEST(RobotHardware, PhysicsStreamsTargetsOnlyOnceMeasured)
   ASSERT_EQ(link.sent.size(), 1u);
   EXPECT_EQ(link.sent[0].positions[0], 0.5);
   EXPECT_EQ(link.last_time, 0.01);
+}
+
+TEST(RobotHardware, PhysicsIsNotReadyWhileItsStatesAreStaleAndHoldsTheirNewPoseAfter)
+{
+  StubLink link;
+  PhysicsRobot r({ "a" }, link, 0.5);
+  link.measured = std::make_unique<JointSample>(at({ 0.4 }));
+  r.read(0.0, 0.01);
+  ASSERT_TRUE(r.ready());
+  EXPECT_EQ(r.fault(), "");
+  r.command().positions[0] = 0.9;
+  link.age = 0.75;  // the physics node stopped publishing
+  r.read(0.01, 0.01);
+  r.write(0.01, 0.01);
+  EXPECT_FALSE(r.ready());
+  EXPECT_EQ(r.fault(), "no joint_states for 0.75 s (state_timeout 0.5 s): is the physics node running?");
+  EXPECT_TRUE(link.sent.empty());  // nothing is streamed on a state nobody measures
+  link.age = 0.0;
+  *link.measured = at({ -0.2 });  // restarted elsewhere
+  r.read(0.02, 0.01);
+  EXPECT_TRUE(r.ready());
+  EXPECT_EQ(r.command().positions[0], -0.2);
+}
+
+TEST(RobotHardware, PhysicsSendsTheEffortLimitsOfTheCommand)
+{
+  StubLink link;
+  PhysicsRobot r({ "a", "g" }, link);
+  link.measured = std::make_unique<JointSample>(at({ 0.0, 0.3 }));
+  r.read(0.0, 0.01);
+  r.effortLimits()[1] = 5.7;
+  r.write(0.0, 0.01);
+  ASSERT_EQ(link.sent_limits.size(), 1u);
+  EXPECT_EQ(link.sent_limits[0], (std::vector<double>{ 0.0, 5.7 }));
 }
 
 TEST(RobotHardware, RealMeasuresAndNeverSends)

@@ -135,25 +135,71 @@ TEST(TrajectoryValidator, RejectsTooFastInterpolant)
   EXPECT_NE(v.message.find("interpolated velocity"), std::string::npos);
 }
 
-TEST(TrajectoryValidator, StartToleranceRejectsOrBlends)
+TEST(TrajectoryValidator, StartToleranceRejectsInTheStrictGate)
 {
   auto g = goal();
   for (auto& p : g.points)
     p.positions[1] += 0.3;  // r_a starts 0.3 rad away
-  auto v = check(g);
+  const auto v = check(g);
   EXPECT_EQ(v.point, 0);
   EXPECT_EQ(v.joint, "r_a");
   EXPECT_NE(v.message.find("start tolerance"), std::string::npos);
+}
 
-  ValidationOptions o;
-  o.insert_blend = true;
-  v = check(g, o);
+TEST(TrajectoryValidator, SpliceAtRestBlendsToAFarFirstPointWithinTheLimits)
+{
+  auto g = goal();
+  for (auto& p : g.points)
+    p.positions[1] += 0.3;  // r_a starts 0.3 rad away: blended to, never refused
+  const auto v = TrajectoryValidator(limits(), {}).splice(g, JointSample(3));
   ASSERT_TRUE(v.ok()) << v.message;
   EXPECT_TRUE(v.blended);
   ASSERT_EQ(v.executable.points.size(), 4u);
   EXPECT_EQ(v.executable.points[0].positions[0], 0.0);
-  // a limit-respecting cubic of 0.3 rad needs >= max(1.5*0.3/2, sqrt(6*0.3/5)) = 0.6 s
-  EXPECT_GE(v.executable.points[1].time, 0.6);
+  EXPECT_EQ(v.executable.points[1].positions[0], 0.3);
+  // the goal's points carry velocities: a rest-to-rest cubic over 0.3 rad, peak velocity 1.5 dq / T <= 2,
+  // peak acceleration 6 dq / T^2 <= 5
+  const double shortest = std::max(1.5 * 0.3 / 2.0, std::sqrt(6.0 * 0.3 / 5.0));
+  EXPECT_GE(v.executable.points[1].time, shortest * 0.999);
+  EXPECT_LE(v.executable.points[1].time, shortest * 1.02);
+  EXPECT_NEAR(v.executable.points[3].time - v.executable.points[1].time, 1.0, 1e-12);  // the goal's own timing
+}
+
+TEST(TrajectoryValidator, SpliceDropsPassedPointsAndStartsFromTheMovingState)
+{
+  auto g = goal();  // points at 0, 0.5, 1.0 s
+  JointSample moving(3);
+  moving.velocities = { 0.2, -0.1, 0.05 };
+  moving.accelerations = { 0.5, 0.0, -0.3 };
+  moving.positions = { 0.12, 0.0, 0.05 };  // 0.3 s from point 1 without passing a limit
+  const auto v = TrajectoryValidator(limits(), {}).splice(g, moving, 0.2);  // 0.2 s of the goal have passed
+  ASSERT_TRUE(v.ok()) << v.message;
+  ASSERT_EQ(v.executable.points.size(), 3u);  // the splice point and the goal's points 1 and 2
+  EXPECT_EQ(v.executable.points[0].velocities, moving.velocities);
+  EXPECT_EQ(v.executable.points[0].accelerations, moving.accelerations);
+  EXPECT_NEAR(v.executable.points[1].time, 0.3, 1e-12);  // 0.5 s of the goal, 0.2 s in
+  EXPECT_DOUBLE_EQ(v.executable.points[1].positions[0], 0.2);
+  EXPECT_FALSE(v.blended);
+  // the splice never refuses for the start tolerance, but still names a point beyond the limits
+  g.points[2].positions[0] = 1.5;  // r_c
+  const auto bad = TrajectoryValidator(limits(), {}).splice(g, moving, 0.2);
+  EXPECT_EQ(bad.point, 2);
+  EXPECT_EQ(bad.joint, "r_c");
+}
+
+TEST(TrajectoryValidator, SpliceKeepsTheLastPointWhenAllHavePassed)
+{
+  JointTrajectory g;
+  g.joint_names = { "r_a", "r_b", "r_c" };
+  TrajectoryPoint target;
+  target.positions = { 0.4, -0.2, 0.1 };  // one point at time 0: "go there", as scripts send it
+  g.points = { target };
+  const auto v = TrajectoryValidator(limits(), {}).splice(g, JointSample(3));
+  ASSERT_TRUE(v.ok()) << v.message;
+  EXPECT_TRUE(v.blended);
+  ASSERT_EQ(v.executable.points.size(), 2u);
+  EXPECT_EQ(v.executable.points[1].positions, target.positions);
+  EXPECT_EQ(v.executable.points[1].velocities, (std::vector<double>{ 0.0, 0.0, 0.0 }));
 }
 
 TEST(TrajectoryValidator, PrependsCurrentStateWhenFirstPointIsLater)

@@ -76,6 +76,17 @@ DriveSection readDrives(const YamlField& config, const Robot& robot)
   }
   return section;
 }
+/// An optional positive number of a gripper config (0 when absent).
+double optionalPositive(const YamlField& gripper_config, const std::string& key, const std::string& unit)
+{
+  if (!gripper_config.has(key))
+    return 0.0;
+  const auto field = gripper_config[key];
+  const double value = field.asDouble();
+  if (!(value > 0.0))
+    field.fail("must be a positive number of " + unit + ", got " + field.asString());
+  return value;
+}
 }  // namespace
 
 std::map<std::string, double> loadAccelerationLimits(const std::string& config_file, const std::string& prefix)
@@ -97,6 +108,8 @@ void readRobotConfig(Robot& robot)
   const YamlField hand = gripper_config ? YamlField::loadFile(robot.gripper_config_file) : arm;
   const auto arm_limits = accelerationLimits(arm, prefix);
   const auto hand_limits = gripper_config ? accelerationLimits(hand, prefix) : arm_limits;
+  robot.fingertip_lever_arm = gripper_config ? optionalPositive(hand, "fingertip_lever_arm", "m") : 0.0;
+  robot.max_grip_force = gripper_config ? optionalPositive(hand, "max_grip_force", "N") : 0.0;
   const DriveSection arm_drives = readDrives(arm, robot);
   const DriveSection hand_drives = gripper_config ? readDrives(hand, robot) : arm_drives;
   for (const auto& entry : robot.initial_positions)

@@ -109,3 +109,27 @@ TEST(RobotConfig, BadGainsNameFileLineAndField)
                 .find("acceleration_limits.elbow: missing for joint 'arm_elbow'"),
             std::string::npos);
 }
+
+TEST(RobotConfig, TheGrippersLeverArmComesFromItsOwnFile)
+{
+  Robot robot = robotWith(kLimits, "acceleration_limits: {finger: 5.0}\nfingertip_lever_arm: 0.057\n");
+  readRobotConfig(robot);
+  EXPECT_DOUBLE_EQ(robot.fingertip_lever_arm, 0.057);
+  EXPECT_NE(errorOf(robotWith(kLimits, "acceleration_limits: {finger: 5.0}\nfingertip_lever_arm: -0.05\n"))
+                .find("gripper.yaml:2: fingertip_lever_arm: must be a positive number of m, got -0.05"),
+            std::string::npos);
+}
+
+TEST(RobotConfig, ShippedGrippersGiveTheirLeverArmAndRatedForce)
+{
+  for (const auto& [gripper, force] : { std::pair{ "robotiq_2f_85", 235.0 }, std::pair{ "robotiq_2f_140", 125.0 } })
+  {
+    Robot robot = robotWith(kLimits);
+    robot.gripper_config_file = std::string(VRRW_SCENE_ROOT) + "/urdf/config/" + gripper + ".yaml";
+    robot.initial_positions = { { "arm_shoulder", 0.0 }, { "arm_elbow", 0.0 }, { "arm_finger_joint", 0.0 } };
+    robot.gripper_joints = { "arm_finger_joint" };
+    readRobotConfig(robot);
+    EXPECT_GT(robot.fingertip_lever_arm, 0.0) << gripper;
+    EXPECT_DOUBLE_EQ(robot.max_grip_force, force) << gripper;
+  }
+}

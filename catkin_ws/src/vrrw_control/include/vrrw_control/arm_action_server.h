@@ -9,9 +9,10 @@
 
 namespace vrrw_control
 {
-/// \brief The FollowJointTrajectory action of one arm: gate, preemption, cancel with a smooth stop,
-/// feedback every control cycle, results with control_msgs error codes. In real mode a goal first
-/// runs in simulation, then waits for `confirm_real_execution` before the relay sends it.
+/// \brief The FollowJointTrajectory action of one arm: gate, splicing (or, strict, preemption by a
+/// stop), cancel with a smooth stop, feedback every control cycle, results with control_msgs error
+/// codes. In real mode a goal first runs in simulation, then waits for `confirm_real_execution`
+/// before the relay sends it. Every goal that reaches the server gets a result.
 class ArmActionServer
 {
 public:
@@ -23,6 +24,7 @@ public:
     Tolerances defaults;            ///< used where a goal leaves a tolerance at 0
     ros::Time clock_origin;         ///< maps to controller time 0 (keeps doubles small and exact)
     double confirm_timeout = 120.0;  ///< real mode: s to wait for the confirmation
+    int queue_size = 10000;          ///< goals (and results) actionlib may queue: a burst's size
   };
 
   /// \brief `relay` non-null selects real mode. `real` (optional, real mode) measures the real arm:
@@ -33,12 +35,23 @@ public:
 
   /// \brief One control cycle at `now`; between hardware read and write.
   void update(const ros::Time& now);
+  /// \brief The hardware lost its state (`why`): aborts a running goal; the arm holds what is
+  /// measured once the state is back.
+  void suspend(const std::string& why);
+  /// \brief Free-drive on: aborts a previewed goal and rejects new ones ("free-drive active"); a
+  /// measured arm follows its measured pose. Off: holds the measured pose (or the desired state,
+  /// brought to rest) of that instant.
+  void setFreeDrive(bool active, const ros::Time& now);
+  /// \brief Ends a goal running in simulation as preempted, because `why` commands the arm now.
+  void preempt(const std::string& why);
 
 private:
   enum class Phase { Idle, Simulating, AwaitingConfirmation, Relaying };
 
   double toTime(const ros::Time& t) const { return (t - origin_).toSec(); }
   void onGoal(GoalHandle gh);
+  /// Empty when the goal may be planned now, else the result code and message of its rejection.
+  std::pair<int, std::string> admissible(const control_msgs::FollowJointTrajectoryGoal& goal, const ros::Time& start, const ros::Time& now) const;
   void onCancel(GoalHandle gh);
   bool onConfirm(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res);
   void reject(GoalHandle& gh, int code, const std::string& message);
@@ -58,5 +71,13 @@ private:
   Phase phase_ = Phase::Idle;
   ros::Time confirm_deadline_;
   std::string name_;
+  bool suspended_ = false;
+  bool free_drive_ = false;
 };
+
+/// \brief Sets actionlib's queue sizes of the action `name` (relative to `nh`) to `size`, before its
+/// server is built: actionlib's defaults (server 50, C++ client 10 goals) drop goals and results of a
+/// larger burst, which leaves their clients waiting forever. The client sizes are read from the
+/// action's namespace by every roscpp ActionClient of it created afterwards.
+ros::NodeHandle sizedActionQueues(ros::NodeHandle& nh, const std::string& name, int size);
 }  // namespace vrrw_control

@@ -10,5 +10,6 @@ public:
   using RobotHardware::RobotHardware;
   void read(double time, double period) override;
   void write(double time, double period) override;
+  bool measures() const override { return false; }
 };
 }  // namespace vrrw_control

@@ -2,21 +2,25 @@
 #include <actionlib/server/action_server.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <ros/ros.h>
+#include <vrrw_control/arm_action_server.h>
 #include <vrrw_control/gripper_controller.h>
 
 namespace vrrw_control
 {
 /// \brief The GripperCommand action of one gripper: position of the actuated joint, feedback every
-/// cycle, result reached_goal or stalled (succeeded when stalling is allowed, aborted otherwise).
+/// cycle, result reached_goal or stalled (succeeded when stalling is allowed, aborted otherwise);
+/// `max_effort` (pad force, N) bounds the squeeze through the actuated joint's drive force limit.
 class GripperActionServer
 {
 public:
   using Action = control_msgs::GripperCommandAction;
   using GoalHandle = actionlib::ServerGoalHandle<Action>;
 
-  GripperActionServer(ros::NodeHandle& nh, GripperController& gripper, const ros::Time& clock_origin,
-                      bool allow_stalling);
+  GripperActionServer(ros::NodeHandle& nh, GripperController& gripper, const RobotHardware& hardware,
+                      const ros::Time& clock_origin, bool allow_stalling, int queue_size);
   void update(const ros::Time& now);
+  /// \brief The hardware lost its state (`why`): aborts a running goal.
+  void suspend(const std::string& why);
 
 private:
   double toTime(const ros::Time& t) const { return (t - origin_).toSec(); }
@@ -24,6 +28,7 @@ private:
   void onCancel(GoalHandle gh);
 
   GripperController& gripper_;
+  const RobotHardware& hw_;
   ros::Time origin_;
   bool allow_stalling_;
   actionlib::ActionServer<Action> server_;

@@ -10,8 +10,9 @@ namespace vrrw_control
 /// \brief A JointSample as a trajectory point (effort left empty).
 trajectory_msgs::JointTrajectoryPoint toPointMsg(const JointSample& sample, double time_from_start = 0.0);
 
-/// \brief Applies control_msgs tolerances over `defaults`: 0 keeps the default, -1 erases the
-/// check, a positive value replaces it. Returns an error naming an unknown joint, else "".
+/// \brief Applies control_msgs tolerances over `defaults`: 0 keeps the default, a negative value (-1)
+/// erases the check, a positive value replaces it. Returns one line naming the field of an unknown
+/// joint, a value that is not finite or a negative goal_time_tolerance, else "".
 std::string applyTolerances(const std::vector<control_msgs::JointTolerance>& path,
                             const std::vector<control_msgs::JointTolerance>& goal, double goal_time,
                             const std::vector<std::string>& joints, Tolerances& defaults);

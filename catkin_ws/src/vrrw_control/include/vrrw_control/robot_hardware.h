@@ -17,8 +17,12 @@ public:
   virtual void read(double time, double period) = 0;
   /// \brief Sends the command of this cycle.
   virtual void write(double time, double period) = 0;
-  /// \brief True once a measured state exists for every joint.
+  /// \brief True while a fresh measured state exists for every joint.
   virtual bool ready() const { return true; }
+  /// \brief Why the hardware is not ready, one line; empty when it is.
+  virtual std::string fault() const { return ""; }
+  /// \brief False when the state is the command itself (a fake robot), true when it is measured.
+  virtual bool measures() const { return true; }
 
   const std::vector<std::string>& joints() const { return joints_; }
   /// \brief Index of a joint, or -1.
@@ -28,6 +32,9 @@ public:
   const std::vector<double>& efforts() const { return efforts_; }
   JointSample& command() { return command_; }
   const JointSample& command() const { return command_; }
+  /// \brief Drive force/torque limit per joint while the command holds (N, N m); 0: the configured one.
+  std::vector<double>& effortLimits() { return effort_limits_; }
+  const std::vector<double>& effortLimits() const { return effort_limits_; }
 
   /// \brief Sets state and command to one resting configuration (start-up).
   void reset(const std::vector<double>& positions);
@@ -37,5 +44,6 @@ protected:
   JointSample state_;
   JointSample command_;
   std::vector<double> efforts_;
+  std::vector<double> effort_limits_;
 };
 }  // namespace vrrw_control

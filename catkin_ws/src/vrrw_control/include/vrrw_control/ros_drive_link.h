@@ -7,7 +7,8 @@
 namespace vrrw_control
 {
 /// \brief DriveLink to the physics node: publishes sensor_msgs/JointState drive targets
-/// (position + velocity) and keeps the newest value of every joint from its joint_states.
+/// (position + velocity; joints with a force limit in a second message whose `effort` carries it)
+/// and keeps the newest value of every joint from its joint_states.
 class RosDriveLink : public DriveLink
 {
 public:
@@ -15,8 +16,10 @@ public:
   /// name (a real driver reports `shoulder_pan_joint` for our `ur5e_shoulder_pan_joint`).
   RosDriveLink(ros::NodeHandle& nh, const std::string& targets_topic, const std::string& states_topic,
                const std::string& name_prefix = "");
-  void sendTargets(const std::vector<std::string>& joints, const JointSample& targets, double time) override;
+  void sendTargets(const std::vector<std::string>& joints, const JointSample& targets,
+                   const std::vector<double>& effort_limits, double time) override;
   bool latestState(const std::vector<std::string>& joints, JointSample& state, std::vector<double>& efforts) override;
+  double stateAge() const override;
 
 private:
   struct Measured
@@ -29,6 +32,7 @@ private:
   ros::Subscriber states_;
   std::string prefix_;
   std::map<std::string, Measured> latest_;
-  sensor_msgs::JointState out_;
+  ros::WallTime received_;  ///< zero until the first message
+  sensor_msgs::JointState out_, limited_;
 };
 }  // namespace vrrw_control

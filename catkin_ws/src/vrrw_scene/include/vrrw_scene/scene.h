@@ -82,6 +82,11 @@ struct Robot
   /// \brief Drive gains of every movable joint that is not a mimic joint, from config_file (gripper joints
   /// from gripper_config_file); JointGains' defaults where a config has no `drives` (or the robot no config).
   std::map<std::string, JointGains> drive_gains;
+  /// \brief `fingertip_lever_arm` of gripper_config_file (m): a pad force F (GripperCommand max_effort, N)
+  /// is the actuated joint's drive force limit F x this. 0 when the gripper's config does not give it.
+  double fingertip_lever_arm = 0.0;
+  /// \brief `max_grip_force` of gripper_config_file: the rated pad force (N); 0 when not given.
+  double max_grip_force = 0.0;
 };
 
 /// \brief A cell expanded from its YAML: one combined URDF of all robots plus the object list.
