@@ -1,6 +1,7 @@
 // planning_node: FK, IK, state checks and motion planning for every robot of a scene, as services
 // under /<robot>/; live joint states from /joint_states. Parameters: ~scene (a shipped scene name or YAML
-// path), ~seed (OMPL's process seed, default 1).
+// path), ~seed (OMPL's process seed, default 1), ~stale_after (s, default 1: answers taken from a robot's
+// live state older than this carry a warning in their message).
 #include <memory>
 #include <ompl/util/RandomNumbers.h>
 #include <ros/ros.h>
@@ -24,6 +25,13 @@ int main(int argc, char** argv)
   }
   int seed = 1;
   private_nh.param("seed", seed, 1);
+  double stale_after = 1.0;
+  private_nh.param("stale_after", stale_after, 1.0);
+  if (!(stale_after > 0.0))
+  {
+    ROS_FATAL_STREAM("planning_node: ~stale_after: " << stale_after << " s: must be positive");
+    return 2;
+  }
   ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(seed));
   tf2_ros::Buffer tf;
   tf2_ros::TransformListener listener(tf);
@@ -33,7 +41,7 @@ int main(int argc, char** argv)
   {
     context = std::make_unique<vrrw_kinematics::SceneContext>(vrrw_scene::loadScene(scene_name), tf);
     for (const vrrw_scene::Robot& robot : context->scene().robots)
-      robots.push_back(std::make_unique<vrrw_kinematics::RobotServices>(nh, robot, *context));
+      robots.push_back(std::make_unique<vrrw_kinematics::RobotServices>(nh, robot, *context, stale_after));
   }
   catch (const std::exception& e)
   {

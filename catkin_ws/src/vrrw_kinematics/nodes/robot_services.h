@@ -1,7 +1,6 @@
 #pragma once
-#include <map>
-#include <memory>
 #include <ros/ros.h>
+#include <vrrw_kinematics/arm.h>
 #include <vrrw_msgs/AttachObject.h>
 #include <vrrw_msgs/CheckState.h>
 #include <vrrw_msgs/ComputeFK.h>
@@ -9,8 +8,6 @@
 #include <vrrw_msgs/Plan.h>
 
 #include "scene_context.h"
-#include "vrrw_kinematics/ik_solver.h"
-#include "vrrw_kinematics/time_parameterization.h"
 
 namespace vrrw_kinematics
 {
@@ -18,7 +15,8 @@ namespace vrrw_kinematics
 class RobotServices
 {
 public:
-  RobotServices(ros::NodeHandle& nh, const vrrw_scene::Robot& robot, SceneContext& context);
+  /// \brief `stale_after` (s): answers taken from a live state older than this carry a warning.
+  RobotServices(ros::NodeHandle& nh, const vrrw_scene::Robot& robot, SceneContext& context, double stale_after);
 
 private:
   bool computeFk(vrrw_msgs::ComputeFK::Request& req, vrrw_msgs::ComputeFK::Response& res);
@@ -27,18 +25,18 @@ private:
   bool plan(vrrw_msgs::Plan::Request& req, vrrw_msgs::Plan::Response& res);
   bool attachObject(vrrw_msgs::AttachObject::Request& req, vrrw_msgs::AttachObject::Response& res);
 
-  const IkSolver& solverFor(const std::string& link);
-  Eigen::VectorXd armValues(const Eigen::VectorXd& state) const;
-  void setArm(Eigen::VectorXd& state, const Eigen::VectorXd& arm) const;
+  /// \brief The plan request's goal, planner, time limit and seed; throws KinematicsError naming the field.
+  PlanRequest planRequest(const vrrw_msgs::Plan::Request& req, const Eigen::VectorXd& state) const;
+  /// \brief The arm joint values of a joint goal; throws KinematicsError naming a bad or repeated joint.
+  Eigen::VectorXd goalJoints(const sensor_msgs::JointState& goal, const Eigen::VectorXd& start) const;
+  /// \brief "" unless the arm's values come from a live state older than stale_after: then a warning
+  /// naming its age, for the answer's message.
+  std::string staleWarning(const sensor_msgs::JointState& given) const;
   std::string linkOrTcp(const std::string& link) const;
 
-  vrrw_scene::Robot robot_;
+  Arm arm_;
   SceneContext& context_;
-  std::string arm_base_;
-  std::vector<int> arm_variables_;
-  std::map<std::string, std::unique_ptr<IkSolver>> solvers_;
-  std::unique_ptr<TimeParameterization> timing_;          ///< blended corners
-  std::unique_ptr<TimeParameterization> timing_exact_;    ///< stops at every waypoint, stays on the path
+  double stale_after_;
   std::vector<ros::ServiceServer> servers_;
 };
 }  // namespace vrrw_kinematics

@@ -2,8 +2,8 @@
 
 #include <tf2_eigen/tf2_eigen.h>
 
-#include "vrrw_kinematics/ik_solver.h"
-#include "vrrw_kinematics/scene_state.h"
+#include <vrrw_kinematics/ik_solver.h>
+#include <vrrw_kinematics/scene_state.h>
 
 namespace vrrw_kinematics
 {
@@ -12,16 +12,33 @@ SceneContext::SceneContext(const vrrw_scene::Scene& scene, tf2_ros::Buffer& tf)
 {
   world_.loadOrComputeAllowedCollisions(scene.cache_dir);
   live_ = initialState(world_.model(), scene);
+  robot_of_variable_.assign(world_.model().variableCount(), "");
+  for (const vrrw_scene::Robot& robot : scene.robots)
+    for (const auto& joint : robot.initial_positions)
+      if (const int v = world_.model().variableIndex(joint.first); v >= 0)
+        robot_of_variable_[static_cast<std::size_t>(v)] = robot.name;
 }
 
 void SceneContext::updateLive(const sensor_msgs::JointState& msg)
 {
+  const ros::WallTime now = ros::WallTime::now();
   for (std::size_t i = 0; i < msg.name.size() && i < msg.position.size(); ++i)
   {
     const int v = world_.model().variableIndex(msg.name[i]);
-    if (v >= 0 && std::isfinite(msg.position[i]))
-      live_[v] = msg.position[i];
+    if (v < 0 || !std::isfinite(msg.position[i]))
+      continue;
+    live_[v] = msg.position[i];
+    if (const std::string& robot = robot_of_variable_[static_cast<std::size_t>(v)]; !robot.empty())
+      last_state_[robot] = now;
   }
+}
+
+std::optional<double> SceneContext::stateAge(const std::string& robot) const
+{
+  const auto last = last_state_.find(robot);
+  if (last == last_state_.end())
+    return std::nullopt;
+  return (ros::WallTime::now() - last->second).toSec();
 }
 
 void SceneContext::refreshObjects()

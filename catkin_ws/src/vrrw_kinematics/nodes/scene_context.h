@@ -1,13 +1,16 @@
 #pragma once
 #include <Eigen/Geometry>
+#include <map>
+#include <optional>
 #include <geometry_msgs/PoseStamped.h>
+#include <ros/time.h>
 #include <sensor_msgs/JointState.h>
 #include <string>
 #include <tf2_ros/buffer.h>
 #include <vrrw_scene/scene.h>
 
-#include "vrrw_kinematics/collision_world.h"
-#include "vrrw_kinematics/kinematics_error.h"
+#include <vrrw_kinematics/collision_world.h>
+#include <vrrw_kinematics/kinematics_error.h>
 
 namespace vrrw_kinematics
 {
@@ -26,8 +29,11 @@ public:
   /// \brief Frees an attached object where the live state puts it.
   void detach(const std::string& object);
   const Eigen::VectorXd& liveState() const { return live_; }
-  /// \brief Takes the positions of known joints from a joint_states message.
+  /// \brief Takes the positions of known joints from a joint_states message, and notes which robots it is of.
   void updateLive(const sensor_msgs::JointState& msg);
+  /// \brief Wall-clock seconds since a joint_states message last named a joint of `robot`; nullopt before the
+  /// first (the robot is at its scene initial state). Wall clock: simulated time stops with the simulation.
+  std::optional<double> stateAge(const std::string& robot) const;
   /// \brief The live state with the message's joints set; throws KinematicsError(InvalidArgument) naming an
   /// unknown joint or a name/position count mismatch.
   Eigen::VectorXd overlay(const sensor_msgs::JointState& msg) const;
@@ -40,6 +46,8 @@ private:
   vrrw_scene::Scene scene_;
   CollisionWorld world_;
   Eigen::VectorXd live_;
+  std::vector<std::string> robot_of_variable_;  ///< owning robot of each model variable ("" for none)
+  std::map<std::string, ros::WallTime> last_state_;  ///< per robot
   tf2_ros::Buffer& tf_;
 };
 }  // namespace vrrw_kinematics

@@ -180,6 +180,7 @@ int CollisionWorld::bodyIndex(const std::string& name) const
 
 void CollisionWorld::rebuildPairs()
 {
+  ++revision_;
   pairs_.clear();
   for (std::size_t i = 0; i < elements_.size(); ++i)
     for (std::size_t j = i + 1; j < elements_.size(); ++j)
@@ -420,6 +421,8 @@ void CollisionWorld::setObjectPose(const std::string& object, const Eigen::Isome
     throw KinematicsError(ErrorCode::InvalidArgument, "object " + object + ": not a scene object");
   if (bodies_[b].link >= 0)
     throw KinematicsError(ErrorCode::InvalidArgument, "object " + object + ": attached; detach it first");
+  if (bodies_[b].offset.matrix() != pose.matrix())
+    ++revision_;
   bodies_[b].offset = pose;
 }
 

@@ -1,4 +1,4 @@
-#include "vrrw_kinematics/kinematics_error.h"
+#include <vrrw_kinematics/kinematics_error.h>
 
 namespace vrrw_kinematics
 {
@@ -16,6 +16,7 @@ const char* errorCodeName(ErrorCode code)
     case ErrorCode::InCollision: return "in_collision";
     case ErrorCode::PlanningFailed: return "planning_failed";
     case ErrorCode::InvalidArgument: return "invalid_argument";
+    case ErrorCode::JointJump: return "joint_jump";
   }
   return "unknown";
 }

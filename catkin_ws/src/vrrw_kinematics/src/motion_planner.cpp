@@ -41,18 +41,9 @@ double seconds(Clock::time_point since)
 
 MotionPlanner::MotionPlanner(const CollisionWorld& world, const std::vector<std::string>& joints,
                              const std::string& tip_link, const Eigen::VectorXd& world_state, double resolution)
-  : checker_(world, joints, world_state), joint_names_(joints), resolution_(resolution)
+  : checker_(world, joints, world_state), bounds_(world.model(), joints), resolution_(resolution)
 {
   const RobotModel& model = world.model();
-  lower_.resize(static_cast<Eigen::Index>(joints.size()));
-  upper_.resize(static_cast<Eigen::Index>(joints.size()));
-  for (std::size_t i = 0; i < joints.size(); ++i)
-  {
-    const JointModel& joint = model.joints()[model.jointIndex(joints[i])];
-    lower_[i] = joint.lower;
-    upper_[i] = joint.upper;
-    continuous_.push_back(joint.type == JointModel::Type::Continuous);
-  }
   reach_ = checker_.reach();
 
   const std::string base = model.links()[model.joints()[model.jointIndex(joints.front())].parent_link].name;
@@ -69,8 +60,8 @@ MotionPlanner::MotionPlanner(const CollisionWorld& world, const std::vector<std:
   ob::RealVectorBounds bounds(joints.size());
   for (std::size_t i = 0; i < joints.size(); ++i)
   {
-    bounds.setLow(i, lower_[i]);
-    bounds.setHigh(i, upper_[i]);
+    bounds.setLow(i, bounds_.lower()[static_cast<Eigen::Index>(i)]);
+    bounds.setHigh(i, bounds_.upper()[static_cast<Eigen::Index>(i)]);
   }
   space->setBounds(bounds);
   space->setStateSamplerAllocator(
@@ -86,7 +77,7 @@ MotionPlanner::~MotionPlanner() = default;
 
 bool MotionPlanner::stateValid(const Eigen::VectorXd& q)
 {
-  return limitViolation(q).empty() && checker_.valid(q);
+  return bounds_.violation(q).empty() && checker_.valid(q);
 }
 
 std::size_t MotionPlanner::segmentSteps(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const
@@ -130,7 +121,7 @@ bool MotionPlanner::pathValid(const std::vector<Eigen::VectorXd>& path)
   if (path.empty() || !stateValid(path.front()))
     return false;
   for (std::size_t i = 1; i < path.size(); ++i)
-    if (!limitViolation(path[i]).empty() || !segmentValid(path[i - 1], path[i]))
+    if (!bounds_.violation(path[i]).empty() || !segmentValid(path[i - 1], path[i]))
       return false;
   return true;
 }
@@ -144,35 +135,31 @@ bool MotionPlanner::trajectoryValid(const vrrw_trajectory::JointTrajectory& traj
   return pathValid(path);
 }
 
-std::string MotionPlanner::limitViolation(const Eigen::VectorXd& q) const
-{
-  if (q.size() != lower_.size())
-    return "expected " + std::to_string(lower_.size()) + " joint values, got " + std::to_string(q.size());
-  for (Eigen::Index i = 0; i < q.size(); ++i)
-    if (!std::isfinite(q[i]) || (!continuous_[i] && (q[i] < lower_[i] - 1e-9 || q[i] > upper_[i] + 1e-9)))
-      return "joint " + joint_names_[i] + " = " + std::to_string(q[i]) + " outside [" + std::to_string(lower_[i]) +
-             ", " + std::to_string(upper_[i]) + "]";
-  return "";
-}
-
-Eigen::VectorXd MotionPlanner::nearestTurn(const Eigen::VectorXd& q, const Eigen::VectorXd& reference) const
-{
-  Eigen::VectorXd out = q;
-  for (Eigen::Index i = 0; i < q.size(); ++i)
-    if (continuous_[i])
-    {
-      const double delta = q[i] - reference[i];
-      out[i] = reference[i] + delta - 2.0 * M_PI * std::nearbyint(delta / (2.0 * M_PI));
-    }
-  return out;
-}
-
-PlanResult MotionPlanner::fail(ErrorCode code, const std::string& message) const
+PlanResult MotionPlanner::fail(ErrorCode code, const std::string& message, const Contact& contact) const
 {
   PlanResult result;
   result.code = code;
   result.message = message;
+  result.contact = contact;
   return result;
+}
+
+PlanResult MotionPlanner::checkEndpoint(const Eigen::VectorXd& q, const std::string& label)
+{
+  if (static_cast<std::size_t>(q.size()) != size())
+    return fail(ErrorCode::InvalidArgument, label + ": expected " + std::to_string(size()) + " joint values, got " +
+                                                std::to_string(q.size()));
+  const std::string violation = bounds_.violation(q);
+  if (!violation.empty())
+    return fail(ErrorCode::OutsideLimits, label + ": " + violation);
+  const Contact contact = checker_.check(q);
+  if (contact.collision)
+    return fail(ErrorCode::InCollision, label + ": in collision (" + contact.body_a + " - " + contact.body_b + ")",
+                contact);
+  PlanResult valid;
+  valid.success = true;
+  valid.code = ErrorCode::Ok;
+  return valid;
 }
 
 bool MotionPlanner::goalStates(const PlanRequest& request, double budget, std::vector<Eigen::VectorXd>& goals,
@@ -180,19 +167,10 @@ bool MotionPlanner::goalStates(const PlanRequest& request, double budget, std::v
 {
   if (request.goal_joints)
   {
-    const std::string violation = limitViolation(*request.goal_joints);
-    if (!violation.empty())
-    {
-      error = fail(ErrorCode::OutsideLimits, "goal: " + violation);
+    error = checkEndpoint(*request.goal_joints, "goal");
+    if (!error.success)
       return false;
-    }
-    const Contact contact = checker_.check(*request.goal_joints);
-    if (contact.collision)
-    {
-      error = fail(ErrorCode::InCollision, "goal: in collision (" + contact.body_a + " - " + contact.body_b + ")");
-      return false;
-    }
-    goals.push_back(nearestTurn(*request.goal_joints, request.start));
+    goals.push_back(bounds_.nearestTurn(*request.goal_joints, request.start));
     return true;
   }
   if (!request.goal_pose)
@@ -236,7 +214,7 @@ bool MotionPlanner::goalStates(const PlanRequest& request, double budget, std::v
       any_solution = true;
       const Contact contact = checker_.check(q);
       if (!contact.collision)
-        goals.push_back(nearestTurn(q, request.start));
+        goals.push_back(bounds_.nearestTurn(q, request.start));
       else if (!first_contact.collision)
         first_contact = contact;
     }
@@ -255,20 +233,17 @@ bool MotionPlanner::goalStates(const PlanRequest& request, double budget, std::v
     error = fail(ErrorCode::NoSolution, "goal pose: unreachable for " + ik_->chain().tipLink() + " (no IK solution)");
   else
     error = fail(ErrorCode::InCollision, "goal pose: every IK solution is in collision (" + first_contact.body_a +
-                                             " - " + first_contact.body_b + ")");
+                                             " - " + first_contact.body_b + ")",
+                 first_contact);
   return false;
 }
 
 PlanResult MotionPlanner::plan(const PlanRequest& request)
 {
   const Clock::time_point start_time = Clock::now();
-  const std::string violation = limitViolation(request.start);
-  if (!violation.empty())
-    return fail(ErrorCode::OutsideLimits, "start: " + violation);
-  const Contact start_contact = checker_.check(request.start);
-  if (start_contact.collision)
-    return fail(ErrorCode::InCollision,
-                "start: in collision (" + start_contact.body_a + " - " + start_contact.body_b + ")");
+  const PlanResult start_problem = checkEndpoint(request.start, "start");
+  if (!start_problem.success)
+    return start_problem;
   if (!std::isfinite(request.time_limit) || request.time_limit <= 0.0)
     return fail(ErrorCode::InvalidArgument, "time limit: must be positive");
   const std::vector<std::string> known = plannerNames();
@@ -288,8 +263,8 @@ PlanResult MotionPlanner::plan(const PlanRequest& request)
   for (std::size_t i = 0; i < size(); ++i)
   {
     const Eigen::Index j = static_cast<Eigen::Index>(i);
-    bounds.setLow(i, continuous_[i] ? request.start[j] - M_PI : lower_[j]);
-    bounds.setHigh(i, continuous_[i] ? request.start[j] + M_PI : upper_[j]);
+    bounds.setLow(i, bounds_.continuous(i) ? request.start[j] - M_PI : bounds_.lower()[j]);
+    bounds.setHigh(i, bounds_.continuous(i) ? request.start[j] + M_PI : bounds_.upper()[j]);
   }
   space_->setBounds(bounds);
   sampler_seed_ = request.seed * 1000003ull + 1;

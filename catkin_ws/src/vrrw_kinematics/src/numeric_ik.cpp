@@ -1,4 +1,4 @@
-#include "vrrw_kinematics/numeric_ik.h"
+#include <vrrw_kinematics/numeric_ik.h>
 
 #include <chrono>
 #include <cmath>
@@ -129,10 +129,12 @@ IkResult NumericIK::solve(const Eigen::Isometry3d& target, const Eigen::VectorXd
   clamp(q);
   Error e;
   double best = std::numeric_limits<double>::infinity();
+  double closest = std::numeric_limits<double>::infinity();
   while (true)
   {
     ++result.attempts;
-    if (descend(target, options, q, e, kIterationsPerAttempt) && (q - seed).squaredNorm() < best)
+    const bool solved = descend(target, options, q, e, kIterationsPerAttempt);
+    if (solved && (q - seed).squaredNorm() < best)
     {
       best = (q - seed).squaredNorm();
       result.success = true;
@@ -143,6 +145,13 @@ IkResult NumericIK::solve(const Eigen::Isometry3d& target, const Eigen::VectorXd
       if (!options.nearest)
         return result;
     }
+    else if (!solved && !result.success && e.residual.norm() < closest)
+    {
+      // A failure reports the residual of the attempt that came closest to the target.
+      closest = e.residual.norm();
+      result.position_error = e.position;
+      result.orientation_error = e.orientation;
+    }
     if (Clock::now() >= deadline)
       break;
     q = chain_.randomState(rng);
@@ -151,7 +160,7 @@ IkResult NumericIK::solve(const Eigen::Isometry3d& target, const Eigen::VectorXd
     return result;
   result.message = "no IK solution for tip " + chain_.tipLink() + " within " + std::to_string(options.timeout) +
                    " s (" + std::to_string(result.attempts) + " attempts; best position error " +
-                   std::to_string(e.position) + " m)";
+                   std::to_string(result.position_error) + " m)";
   return result;
 }
 }  // namespace vrrw_kinematics

@@ -10,3 +10,15 @@ inline std::string fixture(const std::string& name)
   buffer << in.rdbuf();
   return buffer.str();
 }
+
+#include <Eigen/Dense>
+#include <initializer_list>
+
+inline Eigen::VectorXd vec(std::initializer_list<double> values)
+{
+  Eigen::VectorXd v(static_cast<Eigen::Index>(values.size()));
+  int i = 0;
+  for (const double x : values)
+    v[i++] = x;
+  return v;
+}

@@ -13,15 +13,6 @@ namespace
 const std::vector<std::string> kJoints = { "shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint",
                                            "wrist_1_joint", "wrist_2_joint", "wrist_3_joint" };
 
-Eigen::VectorXd vec(std::initializer_list<double> values)
-{
-  Eigen::VectorXd v(static_cast<Eigen::Index>(values.size()));
-  int i = 0;
-  for (const double x : values)
-    v[i++] = x;
-  return v;
-}
-
 class MotionPlannerTest : public ::testing::Test
 {
 protected:

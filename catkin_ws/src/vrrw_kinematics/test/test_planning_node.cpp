@@ -1,4 +1,6 @@
 #include <gtest/gtest.h>
+#include <cmath>
+#include <limits>
 #include <ros/ros.h>
 #include <vrrw_msgs/AttachObject.h>
 #include <vrrw_msgs/CheckState.h>
@@ -188,6 +190,61 @@ TEST(PlanningNode, BadRequestsGetCodesAndTheNodeStaysUp)
 
   vrrw_msgs::CheckState still_up;
   EXPECT_TRUE(ros::service::call("/ur5e/check_state", still_up));
+}
+
+TEST(PlanningNode, PlanRequestsWithoutAUsableGoalOrTimeLimitAreRefused)
+{
+  vrrw_msgs::Plan empty;
+  empty = call("/ur5e/plan", empty);
+  EXPECT_EQ(empty.response.error_code, 9);
+  EXPECT_EQ(empty.response.message.rfind("no goal", 0), 0u) << empty.response.message;
+
+  vrrw_msgs::Plan twice;  // the controller refuses the same joint named twice: so does the planner
+  twice.request.goal_joints = arm({ 0.3, -1.57, 1.57, -1.57, -1.57, 0.0 });
+  twice.request.goal_joints.name[3] = kArm[0];
+  twice = call("/ur5e/plan", twice);
+  EXPECT_EQ(twice.response.error_code, 9);
+  EXPECT_NE(twice.response.message.find("joint " + kArm[0] + ": named twice"), std::string::npos)
+      << twice.response.message;
+
+  for (const double limit : { -1.0, std::nan(""), std::numeric_limits<double>::infinity() })
+  {
+    vrrw_msgs::Plan bad_limit;
+    bad_limit.request.goal_joints = arm({ 0.3, -1.57, 1.57, -1.57, -1.57, 0.0 });
+    bad_limit.request.time_limit = limit;
+    bad_limit = call("/ur5e/plan", bad_limit);
+    EXPECT_EQ(bad_limit.response.error_code, 9) << limit;
+    EXPECT_EQ(bad_limit.response.message.rfind("time_limit", 0), 0u) << bad_limit.response.message;
+  }
+}
+
+TEST(PlanningNode, AnswersFromAStoppedJointStateStreamCarryAWarning)
+{
+  ros::NodeHandle nh;
+  ros::Publisher states = nh.advertise<sensor_msgs::JointState>("/joint_states", 10);
+  const sensor_msgs::JointState home = arm({ 0.0, -1.57, 1.57, -1.57, -1.57, 0.0 });
+  for (int i = 0; i < 600 && states.getNumSubscribers() == 0; ++i)
+    ros::Duration(0.05).sleep();
+  for (int i = 0; i < 10; ++i)
+  {
+    states.publish(home);  // a controller streaming, then stopping (~stale_after is 1 s)
+    ros::Duration(0.05).sleep();
+  }
+  ros::Duration(1.5).sleep();
+  vrrw_msgs::CheckState stale = call("/ur5e/check_state", vrrw_msgs::CheckState());
+  EXPECT_EQ(stale.response.error_code, 0);
+  EXPECT_TRUE(stale.response.valid);
+  EXPECT_NE(stale.response.message.find("last joint state of ur5e is"), std::string::npos) << stale.response.message;
+  vrrw_msgs::Plan plan;
+  plan.request.goal_joints = arm({ 0.3, -1.57, 1.57, -1.57, -1.57, 0.0 });
+  plan = call("/ur5e/plan", plan);
+  EXPECT_EQ(plan.response.error_code, 0) << plan.response.message;
+  EXPECT_NE(plan.response.message.find("s old"), std::string::npos) << plan.response.message;
+
+  vrrw_msgs::CheckState given;  // a request that gives every arm joint does not use the live state
+  given.request.joint_state = home;
+  given = call("/ur5e/check_state", given);
+  EXPECT_EQ(given.response.message, "");
 }
 
 TEST(PlanningNode, AttachAndDetachAnObject)

@@ -2,6 +2,7 @@
 
 #include <random>
 
+#include "fixtures.h"
 #include "vrrw_kinematics/kinematics_error.h"
 #include "vrrw_kinematics/time_parameterization.h"
 
@@ -9,15 +10,6 @@ using namespace vrrw_kinematics;
 
 namespace
 {
-Eigen::VectorXd vec(std::initializer_list<double> values)
-{
-  Eigen::VectorXd v(static_cast<Eigen::Index>(values.size()));
-  int i = 0;
-  for (const double x : values)
-    v[i++] = x;
-  return v;
-}
-
 double distanceToPolyline(const Eigen::VectorXd& q, const std::vector<Eigen::VectorXd>& path)
 {
   double best = std::numeric_limits<double>::infinity();

@@ -7,8 +7,9 @@
 #include <vector>
 #include <vrrw_scene/scene.h>
 
-#include "vrrw_kinematics/allowed_collision_matrix.h"
-#include "vrrw_kinematics/robot_model.h"
+#include <vrrw_kinematics/allowed_collision_matrix.h>
+#include <vrrw_kinematics/contact.h>
+#include <vrrw_kinematics/robot_model.h>
 
 namespace fcl
 {
@@ -38,14 +39,6 @@ struct CollisionBody
   Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();  ///< free object: world pose; attached: in the link frame
   bool object = false;
   std::vector<int> elements;
-};
-
-/// \brief Result of a collision check: the first colliding pair found.
-struct Contact
-{
-  bool collision = false;
-  std::string body_a;
-  std::string body_b;
 };
 
 /// \brief Smallest distance between any pair that is checked (negative or zero when touching).
@@ -108,6 +101,9 @@ public:
 
   /// \brief Element pairs whose bodies are not allowed to touch (kept in sync with the ACM).
   const std::vector<std::pair<int, int>>& checkedPairs() const { return pairs_; }
+  /// \brief Counts changes of the world (an object moved, attached or detached, allowed pairs changed): a
+  /// StateChecker built at an older revision is out of date.
+  std::uint64_t revision() const { return revision_; }
 
 private:
   void addBody(CollisionBody body, const std::vector<vrrw_scene::Shape>& shapes);
@@ -123,6 +119,7 @@ private:
   AllowedCollisionMatrix acm_;
   std::vector<std::pair<int, int>> pairs_;
   std::string urdf_;
+  std::uint64_t revision_ = 0;
 };
 
 /// \brief World-frame axis-aligned box (centre, half extents) of an element at `pose`.

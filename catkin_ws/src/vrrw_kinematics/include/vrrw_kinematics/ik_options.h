@@ -1,9 +1,11 @@
 #pragma once
 #include <Eigen/Dense>
 #include <cstdint>
+#include <limits>
 #include <string>
 
-#include "vrrw_kinematics/kinematics_error.h"
+#include <vrrw_kinematics/contact.h>
+#include <vrrw_kinematics/kinematics_error.h>
 
 namespace vrrw_kinematics
 {
@@ -19,6 +21,9 @@ struct IkOptions
   bool allow_analytic = true;           ///< use the closed form when the chain has one
   bool nearest = false;                 ///< numeric: keep restarting until the timeout, return the solution
                                         ///< nearest the seed (else the first one, found from the seed itself)
+  /// Largest |q_i - seed_i| (rad, m) a solution may have: a solution farther from the seed is a branch
+  /// flip (elbow or wrist turning over) and is refused with ErrorCode::JointJump (solveCollisionFree).
+  double max_jump = std::numeric_limits<double>::infinity();
 };
 
 /// \brief The answer to an IK request.
@@ -28,8 +33,10 @@ struct IkResult
   ErrorCode code = ErrorCode::NoSolution;
   std::string message;
   Eigen::VectorXd q;
-  double position_error = 0.0;
-  double orientation_error = 0.0;
+  double position_error = 0.0;     ///< m; on NoSolution: the smallest residual reached
+  double orientation_error = 0.0;  ///< rad; on NoSolution: at that residual
+  double jump = 0.0;               ///< max_i |q_i - seed_i| of q, or on JointJump of the nearest solution
+  Contact contact;                 ///< on InCollision: the pair the nearest solution within max_jump touches
   int attempts = 0;
 };
 }  // namespace vrrw_kinematics

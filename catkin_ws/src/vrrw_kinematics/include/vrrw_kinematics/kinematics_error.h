@@ -17,6 +17,7 @@ enum class ErrorCode
   InCollision = 7,
   PlanningFailed = 8,
   InvalidArgument = 9,
+  JointJump = 10,  ///< an IK solution exists, but only farther from the seed than allowed (a branch flip)
 };
 
 /// \brief Short stable name of an error code ("unknown_link", ...).

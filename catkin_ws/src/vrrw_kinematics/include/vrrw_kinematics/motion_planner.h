@@ -7,9 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "vrrw_kinematics/ik_options.h"
-#include "vrrw_kinematics/ik_solver.h"
-#include "vrrw_kinematics/state_checker.h"
+#include <vrrw_kinematics/ik_options.h>
+#include <vrrw_kinematics/ik_solver.h>
+#include <vrrw_kinematics/joint_bounds.h>
+#include <vrrw_kinematics/state_checker.h>
 #include <vrrw_trajectory/joint_trajectory.h>
 
 namespace ompl
@@ -44,6 +45,7 @@ struct PlanResult
   bool success = false;
   ErrorCode code = ErrorCode::PlanningFailed;
   std::string message;
+  Contact contact;                    ///< on InCollision: the colliding pair
   std::vector<Eigen::VectorXd> path;  ///< waypoints, start first
   double planning_time = 0.0;         ///< s
   double path_length = 0.0;           ///< joint-space length (rad, m)
@@ -64,9 +66,17 @@ public:
 
   PlanResult plan(const PlanRequest& request);
 
-  std::size_t size() const { return lower_.size(); }
-  const Eigen::VectorXd& lowerLimits() const { return lower_; }
-  const Eigen::VectorXd& upperLimits() const { return upper_; }
+  /// \brief Number of joints of the group.
+  std::size_t size() const { return bounds_.size(); }
+  /// \brief The group's joints, in the order of its joint vectors.
+  const std::vector<std::string>& jointNames() const { return bounds_.names(); }
+  /// \brief The group's joint limits.
+  const JointBounds& bounds() const { return bounds_; }
+  /// \brief Success when `q` has the group's size, lies within the limits and touches nothing; else
+  /// InvalidArgument, OutsideLimits or InCollision (with the pair), the message starting with "<label>: ".
+  PlanResult checkEndpoint(const Eigen::VectorXd& q, const std::string& label);
+  const Eigen::VectorXd& lowerLimits() const { return bounds_.lower(); }
+  const Eigen::VectorXd& upperLimits() const { return bounds_.upper(); }
   const IkSolver& ik() const { return *ik_; }
   /// \brief Pose of the chain base in the world, for pose goals.
   const Eigen::Isometry3d& chainBasePose() const { return chain_base_pose_; }
@@ -85,10 +95,7 @@ public:
   bool trajectoryValid(const vrrw_trajectory::JointTrajectory& trajectory);
 
 private:
-  PlanResult fail(ErrorCode code, const std::string& message) const;
-  std::string limitViolation(const Eigen::VectorXd& q) const;
-  /// \brief q with every continuous joint moved by whole turns to within pi of `reference`.
-  Eigen::VectorXd nearestTurn(const Eigen::VectorXd& q, const Eigen::VectorXd& reference) const;
+  PlanResult fail(ErrorCode code, const std::string& message, const Contact& contact = {}) const;
   bool goalStates(const PlanRequest& request, double budget, std::vector<Eigen::VectorXd>& goals, PlanResult& error);
   /// \brief Drops every waypoint a straight valid segment can skip (greedy, farthest first).
   void reduceVertices(std::vector<Eigen::VectorXd>& path);
@@ -97,16 +104,13 @@ private:
   void simplify(std::vector<Eigen::VectorXd>& path, int attempts, std::uint64_t seed);
 
   StateChecker checker_;
-  std::vector<std::string> joint_names_;
-  Eigen::VectorXd lower_;
-  Eigen::VectorXd upper_;
+  JointBounds bounds_;
   std::vector<double> reach_;
   double resolution_;
   std::unique_ptr<IkSolver> ik_;
   Eigen::Isometry3d chain_base_pose_ = Eigen::Isometry3d::Identity();
   std::shared_ptr<ompl::base::RealVectorStateSpace> space_;
   std::shared_ptr<ompl::base::SpaceInformation> si_;
-  std::vector<bool> continuous_;  ///< continuous joints plan within pi of the start, any turn count
   std::uint64_t sampler_seed_ = 1;
 };
 

@@ -1,0 +1,126 @@
+#include <vrrw_kinematics/trajectory_planning.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace vrrw_kinematics
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+/// A leg gets at least this much planning time (s); less is reported as the time limit running out.
+constexpr double kMinLegTime = 1e-3;
+
+double secondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+bool fail(TrajectoryResult& result, ErrorCode code, const std::string& message, int waypoint,
+          const Contact& contact = {})
+{
+  result.success = false;
+  result.code = code;
+  result.message = message;
+  result.failed_waypoint = waypoint;
+  result.contact = contact;
+  result.trajectory.points.clear();
+  result.waypoint_times.clear();
+  result.path.clear();
+  return false;
+}
+
+/// The blended timing unless it cuts a corner into an obstacle; then the one that stays on the polyline.
+vrrw_trajectory::JointTrajectory timedLeg(MotionPlanner& planner, const TimeParameterization& blended,
+                                          const TimeParameterization& exact, const std::vector<Eigen::VectorXd>& path)
+{
+  vrrw_trajectory::JointTrajectory leg = blended.compute(path, planner.jointNames());
+  if (!planner.trajectoryValid(leg))
+    leg = exact.compute(path, planner.jointNames());
+  return leg;
+}
+
+/// Appends a leg that starts where the trajectory ends (both at rest), shifted to the end's time.
+void appendLeg(const vrrw_trajectory::JointTrajectory& leg, const std::vector<Eigen::VectorXd>& path,
+               TrajectoryResult& result)
+{
+  const bool first = result.trajectory.points.empty();
+  const double offset = first ? 0.0 : result.trajectory.points.back().time;
+  result.trajectory.joint_names = leg.joint_names;
+  for (std::size_t k = first ? 0 : 1; k < leg.points.size(); ++k)
+  {
+    result.trajectory.points.push_back(leg.points[k]);
+    result.trajectory.points.back().time += offset;
+  }
+  result.waypoint_times.push_back(result.trajectory.points.back().time);
+  result.path.insert(result.path.end(), path.begin() + (result.path.empty() ? 0 : 1), path.end());
+  result.path_length += pathLength(path);
+}
+
+bool endpointsValid(MotionPlanner& planner, const TrajectoryRequest& request, TrajectoryResult& result)
+{
+  const PlanResult start = planner.checkEndpoint(request.plan.start, "start");
+  if (!start.success)
+    return fail(result, start.code, start.message, -1, start.contact);
+  for (std::size_t i = 0; i < request.waypoints.size(); ++i)
+  {
+    const PlanResult waypoint = planner.checkEndpoint(request.waypoints[i], "waypoint " + std::to_string(i));
+    if (!waypoint.success)
+      return fail(result, waypoint.code, waypoint.message, static_cast<int>(i), waypoint.contact);
+  }
+  return true;
+}
+}  // namespace
+
+TrajectoryResult planTrajectory(MotionPlanner& planner, const TimingOptions& timing, const TrajectoryRequest& request)
+{
+  const Clock::time_point started = Clock::now();
+  TrajectoryResult result;
+  const double limit = request.plan.time_limit;
+  if (!std::isfinite(limit) || limit <= 0.0)
+  {
+    fail(result, ErrorCode::InvalidArgument, "time limit: must be positive and finite, got " + std::to_string(limit), -1);
+    return result;
+  }
+  if (!endpointsValid(planner, request, result))
+    return result;
+  const TimeParameterization blended(timing);
+  TimingOptions stopping = timing;
+  stopping.max_deviation = 0.0;
+  const TimeParameterization exact(stopping);
+  const std::size_t legs = request.waypoints.size() + 1;
+  Eigen::VectorXd from = request.plan.start;
+  for (std::size_t leg = 0; leg < legs; ++leg)
+  {
+    const bool to_goal = leg + 1 == legs;
+    const std::string label = to_goal ? (legs > 1 ? "to the goal: " : "") : "waypoint " + std::to_string(leg) + ": ";
+    PlanRequest step = request.plan;
+    step.start = from;
+    step.seed = request.plan.seed + leg;
+    step.time_limit = limit - secondsSince(started);
+    if (!to_goal)
+    {
+      step.goal_joints = request.waypoints[leg];
+      step.goal_pose.reset();
+    }
+    if (step.time_limit < kMinLegTime)
+    {
+      fail(result, ErrorCode::PlanningFailed, label + "no time left of the " + std::to_string(limit) + " s limit",
+           static_cast<int>(leg));
+      return result;
+    }
+    const PlanResult planned = planner.plan(step);
+    result.planning_time += planned.planning_time;
+    if (!planned.success)
+    {
+      fail(result, planned.code, label + planned.message, static_cast<int>(leg), planned.contact);
+      return result;
+    }
+    appendLeg(timedLeg(planner, blended, exact, planned.path), planned.path, result);
+    from = planned.path.back();
+  }
+  result.success = true;
+  result.code = ErrorCode::Ok;
+  return result;
+}
+}  // namespace vrrw_kinematics

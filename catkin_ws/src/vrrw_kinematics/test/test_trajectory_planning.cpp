@@ -1,0 +1,150 @@
+// planTrajectory: start -> joint-space waypoints -> goal around a pillar, on the UR5e test URDF.
+#include <gtest/gtest.h>
+
+#include <vrrw_kinematics/trajectory_planning.h>
+
+#include "fixtures.h"
+#include "scene_fixtures.h"
+
+using namespace vrrw_kinematics;
+
+namespace
+{
+const std::vector<std::string> kJoints = { "shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint",
+                                           "wrist_1_joint", "wrist_2_joint", "wrist_3_joint" };
+
+Eigen::VectorXd positions(const vrrw_trajectory::TrajectoryPoint& point)
+{
+  return Eigen::Map<const Eigen::VectorXd>(point.positions.data(), static_cast<Eigen::Index>(point.positions.size()));
+}
+
+class TrajectoryPlanningTest : public ::testing::Test
+{
+protected:
+  TrajectoryPlanningTest()
+    : world_(fixture("ur5e.urdf"), { slab("floor", Eigen::Vector3d(0, 0, -0.04), Eigen::Vector3d(3, 3, 0.1)),
+                                     slab("pillar", Eigen::Vector3d(0.55, 0, 0.35), Eigen::Vector3d(0.2, 0.2, 0.7)) })
+  {
+    world_.computeAllowedCollisions(1000, 1);
+    planner_ = std::make_unique<MotionPlanner>(world_, kJoints, "tool0", Eigen::VectorXd::Zero(6));
+    timing_.max_velocity.assign(6, M_PI);
+    timing_.max_acceleration.assign(6, M_PI);
+    request_.plan.start = vec({ -1.2, -1.2, 1.2, -1.57, -1.57, 0.0 });
+    request_.plan.goal_joints = vec({ 1.2, -1.2, 1.2, -1.57, -1.57, 0.0 });
+    request_.plan.time_limit = 5.0;
+    request_.waypoints = { vec({ -0.6, -1.9, 1.6, -1.2, -1.57, 0.4 }), vec({ 0.6, -1.7, 1.0, -1.57, -1.2, -0.4 }) };
+  }
+
+  /// Every motion between consecutive samples is free: re-checked with the full-world checker.
+  void expectCollisionFree(const vrrw_trajectory::JointTrajectory& trajectory)
+  {
+    for (std::size_t k = 1; k < trajectory.points.size(); ++k)
+    {
+      const Eigen::VectorXd a = positions(trajectory.points[k - 1]), b = positions(trajectory.points[k]);
+      const std::size_t steps = 2 * planner_->segmentSteps(a, b);
+      for (std::size_t s = 0; s <= steps; ++s)
+      {
+        const Contact contact = world_.check(a + (b - a) * (static_cast<double>(s) / static_cast<double>(steps)));
+        ASSERT_FALSE(contact.collision) << "point " << k << ": " << contact.body_a << " - " << contact.body_b;
+      }
+    }
+  }
+
+  CollisionWorld world_;
+  std::unique_ptr<MotionPlanner> planner_;
+  TimingOptions timing_;
+  TrajectoryRequest request_;
+};
+}  // namespace
+
+TEST_F(TrajectoryPlanningTest, PassesThroughEveryWaypointAtRest)
+{
+  for (const Eigen::VectorXd& waypoint : request_.waypoints)
+    ASSERT_TRUE(planner_->stateValid(waypoint));
+  const TrajectoryResult result = planTrajectory(*planner_, timing_, request_);
+  ASSERT_TRUE(result.success) << result.message;
+  ASSERT_EQ(result.waypoint_times.size(), 3u);
+  const auto& points = result.trajectory.points;
+  EXPECT_EQ(result.trajectory.joint_names, kJoints);
+  EXPECT_LT((positions(points.front()) - request_.plan.start).cwiseAbs().maxCoeff(), 1e-12);
+  std::vector<Eigen::VectorXd> stops = request_.waypoints;
+  stops.push_back(*request_.plan.goal_joints);
+  for (std::size_t w = 0; w < stops.size(); ++w)
+  {
+    const auto at = std::find_if(points.begin(), points.end(), [&](const auto& p) { return p.time == result.waypoint_times[w]; });
+    ASSERT_NE(at, points.end()) << "no point at the time of waypoint " << w;
+    EXPECT_LT((positions(*at) - stops[w]).cwiseAbs().maxCoeff(), 1e-6) << "waypoint " << w;
+    for (const double v : at->velocities)
+      EXPECT_EQ(v, 0.0) << "waypoint " << w;
+  }
+  EXPECT_LT(result.waypoint_times[0], result.waypoint_times[1]);
+  EXPECT_EQ(result.waypoint_times[2], points.back().time);
+  for (std::size_t k = 1; k < points.size(); ++k)
+  {
+    ASSERT_GT(points[k].time, points[k - 1].time) << k;
+    for (std::size_t i = 0; i < 6; ++i)
+      EXPECT_LE(std::abs(points[k].velocities[i]), M_PI * (1 + 1e-9)) << k;
+  }
+  EXPECT_GT(result.path_length, (stops[0] - request_.plan.start).norm() + (stops[1] - stops[0]).norm());
+  EXPECT_LT((result.path.front() - request_.plan.start).norm(), 1e-12);
+  EXPECT_LT((result.path.back() - stops.back()).norm(), 1e-12);
+  expectCollisionFree(result.trajectory);
+}
+
+TEST_F(TrajectoryPlanningTest, WithoutWaypointsItIsOnePlannedLeg)
+{
+  request_.waypoints.clear();
+  const TrajectoryResult result = planTrajectory(*planner_, timing_, request_);
+  ASSERT_TRUE(result.success) << result.message;
+  ASSERT_EQ(result.waypoint_times.size(), 1u);
+  EXPECT_LT((positions(result.trajectory.points.back()) - *request_.plan.goal_joints).norm(), 1e-12);
+  expectCollisionFree(result.trajectory);
+}
+
+TEST_F(TrajectoryPlanningTest, PoseGoalAfterTheWaypoints)
+{
+  const Eigen::Isometry3d target = planner_->ik().chain().fk(*request_.plan.goal_joints);
+  request_.plan.goal_joints.reset();
+  request_.plan.goal_pose = planner_->chainBasePose() * target;
+  const TrajectoryResult result = planTrajectory(*planner_, timing_, request_);
+  ASSERT_TRUE(result.success) << result.message;
+  const Eigen::Isometry3d reached = planner_->ik().chain().fk(positions(result.trajectory.points.back()));
+  EXPECT_LT((reached.translation() - target.translation()).norm(), 1e-5);
+  EXPECT_LT(rotationError(target.linear(), reached.linear()).norm(), 1e-5);
+  EXPECT_LT((positions(result.trajectory.points.front()) - request_.plan.start).norm(), 1e-12);
+}
+
+TEST_F(TrajectoryPlanningTest, NamesTheWaypointThatFails)
+{
+  TrajectoryRequest in_pillar = request_;
+  in_pillar.waypoints[1] = vec({ 0.0, -0.3, 0.0, 0.0, 0.0, 0.0 });  // reaching into the pillar
+  TrajectoryResult result = planTrajectory(*planner_, timing_, in_pillar);
+  EXPECT_EQ(result.code, ErrorCode::InCollision);
+  EXPECT_EQ(result.failed_waypoint, 1);
+  EXPECT_TRUE(result.contact.body_a == "pillar" || result.contact.body_b == "pillar");
+  EXPECT_EQ(result.message.rfind("waypoint 1: in collision (", 0), 0u) << result.message;
+  EXPECT_TRUE(result.trajectory.points.empty());
+
+  TrajectoryRequest outside = request_;
+  outside.waypoints[0][2] = 4.0;
+  result = planTrajectory(*planner_, timing_, outside);
+  EXPECT_EQ(result.code, ErrorCode::OutsideLimits);
+  EXPECT_EQ(result.failed_waypoint, 0);
+  EXPECT_NE(result.message.find("elbow_joint"), std::string::npos) << result.message;
+
+  TrajectoryRequest short_waypoint = request_;
+  short_waypoint.waypoints[1] = vec({ 0.0, -1.5 });
+  result = planTrajectory(*planner_, timing_, short_waypoint);
+  EXPECT_EQ(result.code, ErrorCode::InvalidArgument);
+  EXPECT_EQ(result.failed_waypoint, 1);
+
+  TrajectoryRequest bad_start = request_;
+  bad_start.plan.start = vec({ 0.0, -0.3, 0.0, 0.0, 0.0, 0.0 });
+  result = planTrajectory(*planner_, timing_, bad_start);
+  EXPECT_EQ(result.code, ErrorCode::InCollision);
+  EXPECT_EQ(result.failed_waypoint, -1);
+
+  TrajectoryRequest no_time = request_;
+  no_time.plan.time_limit = std::nan("");
+  EXPECT_EQ(planTrajectory(*planner_, timing_, no_time).code, ErrorCode::InvalidArgument);
+}
