@@ -68,7 +68,11 @@ def capture(display, path):
 def view_pixels(path):
     """RGB rows of the 3D view: the capture without rviz's menu and tool bars and status bar."""
     import matplotlib.image
-    image = (matplotlib.image.imread(path)[..., :3] * 255).astype('int16')
+    import numpy
+    image = matplotlib.image.imread(path)
+    if image.ndim == 2:  # a uniform frame (rviz not drawn yet) is saved as grey
+        image = numpy.stack([image] * 3, axis=2)
+    image = (image[..., :3] * 255).astype('int16')
     return image[70:-40, :, :]
 
 
