@@ -168,7 +168,7 @@ SceneSpec parseSceneFile(const std::string& file, const Catalog& catalog)
   const auto root = YamlField::loadFile(file);
   if (!root.node().IsMap())
     root.fail("a scene is a mapping with 'robots' and 'objects'");
-  root.allowKeys({ "name", "seed", "robots", "objects" });
+  root.allowKeys({ "name", "seed", "robots", "objects", "presets" });  // presets: vrrw_interaction
   SceneSpec scene;
   scene.file = file;
   scene.name = root.stringOr("name", fs::path(file).stem().string());
