@@ -15,6 +15,7 @@
 #include "vrrw_kinematics/kinematics_error.h"
 #include "vrrw_kinematics/planner_factory.h"
 #include "ompl_state.h"
+#include "path_simplification.h"
 #include "resolution_motion_validator.h"
 #include "seeded_state_sampler.h"
 
@@ -28,7 +29,6 @@ using Clock = std::chrono::steady_clock;
 /// Longest tree edge (joint-space distance) of the first attempt for planners with a range: measured best
 /// for the UR5e in pick_place_drill (p95 plan time 14-17 ms at 2-3 rad against 25 ms at OMPL's ~6 rad).
 constexpr double kRange = 2.5;
-constexpr int kShortcutFailures = 5;
 /// First planner attempt (s); each restart doubles it. Most queries take under 30 ms.
 constexpr double kFirstAttempt = 0.1;
 constexpr double kMinRange = 0.3;
@@ -278,7 +278,7 @@ PlanResult MotionPlanner::plan(const PlanRequest& request)
     for (std::size_t i = 0; i < solution.getStateCount(); ++i)
       path.push_back(toEigen(solution.getState(i), n));
     if (request.simplify)
-      simplify(path, request.shortcut_attempts, request.seed);
+      simplifyPath(path, segments_, request.shortcut_attempts, request.seed);
   }
   result.success = true;
   result.code = ErrorCode::Ok;
@@ -286,63 +286,6 @@ PlanResult MotionPlanner::plan(const PlanRequest& request)
   result.path_length = pathLength(path);
   result.planning_time = seconds(start_time);
   return result;
-}
-
-void MotionPlanner::reduceVertices(std::vector<Eigen::VectorXd>& path)
-{
-  for (std::size_t i = 0; i + 2 < path.size(); ++i)
-    for (std::size_t j = path.size() - 1; j > i + 1; --j)
-      if (segmentValid(path[i], path[j]))
-      {
-        path.erase(path.begin() + static_cast<std::ptrdiff_t>(i + 1), path.begin() + static_cast<std::ptrdiff_t>(j));
-        break;
-      }
-}
-
-void MotionPlanner::simplify(std::vector<Eigen::VectorXd>& path, int attempts, std::uint64_t seed)
-{
-  reduceVertices(path);
-  std::mt19937_64 rng(seed);
-  for (int attempt = 0, failures = 0; attempt < attempts && failures < kShortcutFailures && path.size() > 2;
-       ++attempt)
-  {
-    std::vector<double> cumulative(1, 0.0);
-    for (std::size_t i = 1; i < path.size(); ++i)
-      cumulative.push_back(cumulative.back() + (path[i] - path[i - 1]).norm());
-    std::uniform_real_distribution<double> along(0.0, cumulative.back());
-    double a = along(rng), b = along(rng);
-    if (a > b)
-      std::swap(a, b);
-    const std::size_t ia = static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), a) -
-                                                    cumulative.begin()) - 1;
-    const std::size_t ib = static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), b) -
-                                                    cumulative.begin()) - 1;
-    if (ia == ib || ib + 1 >= path.size())
-    {
-      ++failures;
-      continue;
-    }
-    const auto point = [&](std::size_t i, double s) {
-      const double t = (s - cumulative[i]) / std::max(cumulative[i + 1] - cumulative[i], 1e-12);
-      return Eigen::VectorXd(path[i] + t * (path[i + 1] - path[i]));
-    };
-    const Eigen::VectorXd pa = point(ia, a), pb = point(ib, b);
-    if (!segmentValid(pa, pb))
-    {
-      ++failures;
-      continue;
-    }
-    failures = 0;
-    std::vector<Eigen::VectorXd> shorter(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(ia + 1));
-    shorter.push_back(pa);
-    shorter.push_back(pb);
-    shorter.insert(shorter.end(), path.begin() + static_cast<std::ptrdiff_t>(ib + 1), path.end());
-    path.clear();
-    for (const Eigen::VectorXd& q : shorter)
-      if (path.empty() || (q - path.back()).norm() > 1e-9)
-        path.push_back(q);
-  }
-  reduceVertices(path);
 }
 
 double pathLength(const std::vector<Eigen::VectorXd>& path)

@@ -100,11 +100,6 @@ public:
 private:
   PlanResult fail(ErrorCode code, const std::string& message, const Contact& contact = {}) const;
   bool goalStates(const PlanRequest& request, double budget, std::vector<Eigen::VectorXd>& goals, PlanResult& error);
-  /// \brief Drops every waypoint a straight valid segment can skip (greedy, farthest first).
-  void reduceVertices(std::vector<Eigen::VectorXd>& path);
-  /// \brief reduceVertices, then up to `attempts` seeded random shortcuts between points on the path
-  /// (stopping after 5 failures in a row), then reduceVertices again.
-  void simplify(std::vector<Eigen::VectorXd>& path, int attempts, std::uint64_t seed);
 
   StateChecker checker_;
   JointBounds bounds_;
