@@ -67,6 +67,7 @@ FreeDrive::FreeDrive(WorldView& view, std::vector<GhostInterface*> arms, double 
     control.markers.push_back(box);
     marker.controls.push_back(control);
     mouse_->insert(marker, [this](const auto& f) { onMouse(f); });
+    mouse_at_[robot] = Eigen::Translation3d(Eigen::Vector3d::Constant(1e9)) * Eigen::Isometry3d::Identity();  // tick() places it
   }
   mouse_->applyChanges();
 }
@@ -261,11 +262,19 @@ void FreeDrive::tick()
   hand_markers_.publish(markers);
   if (!mouse_)
     return;
+  bool moved = false;
   for (auto& [robot, arm] : arms_)  // the mouse markers sit on the live TCPs while nobody drags them
-    if (!dragging_.count("mouse_" + robot))
-      mouse_->setPose(robot, tf2::toMsg(arm->arm().basePose(view_.liveState()) *
-                                        arm->arm().ikSolver().chain().fk(arm->arm().jointValues(view_.liveState()))));
-  mouse_->applyChanges();
+  {
+    const Eigen::Isometry3d tcp =
+        arm->arm().basePose(view_.liveState()) * arm->arm().ikSolver().chain().fk(arm->arm().jointValues(view_.liveState()));
+    Eigen::Isometry3d& shown = mouse_at_[robot];
+    if (dragging_.count("mouse_" + robot) || (tcp.translation() - shown.translation()).norm() < 1e-3)
+      continue;
+    mouse_->setPose(robot, tf2::toMsg(tcp));
+    shown = tcp, moved = true;
+  }
+  if (moved)
+    mouse_->applyChanges();
 }
 
 void FreeDrive::onMouse(const visualization_msgs::InteractiveMarkerFeedbackConstPtr& f)
