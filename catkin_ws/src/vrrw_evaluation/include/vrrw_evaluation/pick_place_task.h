@@ -20,7 +20,7 @@ struct GraspGeometry
   double finger_open = 0.0;      ///< finger_joint, rad
   double finger_closed = 0.8;    ///< rad: past the 64 mm housing, so the grip stalls on it
   double grip_force = 50.0;      ///< N per pad (GripperCommand max_effort); the drill weighs 14.7 N
-  double release_height = 0.004; ///< m the drill's base is above the table when the gripper opens
+  double release_height = 0.006; ///< m the drill's base is above the table when the gripper opens
 };
 
 /// \brief TCP pose (world) that holds the drill standing at `drill` (world pose of its frame).

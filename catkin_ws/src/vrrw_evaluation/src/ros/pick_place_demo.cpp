@@ -172,7 +172,11 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
     [&](std::string& e) { return moveLinear({ { pick, 1.2 } }, e); },
     [&](std::string& e) { return client_.grip(grasp.finger_closed, grasp.grip_force, e); },
     [&](std::string& e) { return moveLinear({ { near_pick, 1.0 } }, e); },
-    [&](std::string& e) { return moveLinear({ { above_place, 1.8 }, { place, 1.0 } }, e); },
+    [&](std::string& e) {
+      const bool placed = moveLinear({ { above_place, 1.8 }, { place, 1.0 } }, e);
+      object_released_ = client_.objectPose();
+      return placed;
+    },
     [&](std::string& e) { return client_.grip(grasp.finger_open, 0.0, e); },
   };
   Recording recording;
