@@ -45,6 +45,102 @@ std::string describe(const vrrw_scene::Shape& shape)
 /// as "never in collision": the samples cover their relative motion too sparsely to trust a near miss.
 constexpr double kNearMargin = 0.02;
 
+/// Allows each link's body with the nearest link up its chain that has a body (links without collision
+/// geometry are passed over).
+void allowAdjacentLinks(const CollisionWorld& world, AllowedCollisionMatrix& acm)
+{
+  const auto& bodies = world.bodies();
+  const auto& links = world.model().links();
+  std::vector<int> link_body(links.size(), -1);
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    if (!bodies[b].object)
+      link_body[bodies[b].link] = static_cast<int>(b);
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+  {
+    if (bodies[b].object)
+      continue;
+    for (int l = links[bodies[b].link].parent_link; l >= 0; l = links[l].parent_link)
+      if (link_body[l] >= 0)
+      {
+        acm.allow(bodies[b].name, bodies[link_body[l]].name, "adjacent");
+        break;
+      }
+  }
+}
+
+/// Per candidate body pair: in how many of the uniform random states it collided, and whether its
+/// boxes ever came within kNearMargin.
+struct PairSamples
+{
+  std::vector<int> hits;
+  std::vector<bool> near;
+};
+
+PairSamples samplePairs(const CollisionWorld& world, const std::vector<std::pair<int, int>>& candidates, int samples,
+                        std::uint64_t seed)
+{
+  const RobotModel& model = world.model();
+  const auto& bodies = world.bodies();
+  const auto& elements = world.elements();
+  PairSamples result{ std::vector<int>(candidates.size(), 0), std::vector<bool>(candidates.size(), false) };
+  std::mt19937_64 rng(seed);
+  Eigen::VectorXd variables(model.variableCount());
+  std::vector<Eigen::Isometry3d> body_poses;
+  std::vector<Eigen::Isometry3d> element_poses(elements.size());
+  std::vector<Eigen::Vector3d> centers(elements.size()), halves(elements.size());
+  for (int s = 0; s < samples; ++s)
+  {
+    for (std::size_t v = 0; v < model.variableCount(); ++v)
+    {
+      const JointModel& joint = model.joints()[model.variableJoints()[v]];
+      variables[v] = std::uniform_real_distribution<double>(joint.lower, joint.upper)(rng);
+    }
+    world.bodyTransforms(variables, body_poses);
+    for (std::size_t e = 0; e < elements.size(); ++e)
+    {
+      element_poses[e] = body_poses[elements[e].body] * elements[e].local;
+      elementAabb(elements[e], element_poses[e], centers[e], halves[e]);
+    }
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+    {
+      bool collide = false;
+      for (const int ea : bodies[candidates[c].first].elements)
+        for (const int eb : bodies[candidates[c].second].elements)
+        {
+          const Eigen::Vector3d margin = Eigen::Vector3d::Constant(kNearMargin);
+          if (!aabbOverlap(centers[ea], halves[ea] + margin, centers[eb], halves[eb] + margin))
+            continue;
+          result.near[c] = true;
+          if (!collide && aabbOverlap(centers[ea], halves[ea], centers[eb], halves[eb]))
+            collide = elementsCollide(elements[ea], element_poses[ea], elements[eb], element_poses[eb]);
+        }
+      result.hits[c] += collide ? 1 : 0;
+    }
+  }
+  return result;
+}
+
+/// Number of joint variables (mimic joints count as their leader) between links a and b.
+std::size_t variablesBetween(const RobotModel& model, int a, int b)
+{
+  std::vector<int> variables;
+  const auto climb = [&](int from, int to) {
+    for (int l = from; l != to && l > 0; l = model.links()[l].parent_link)
+    {
+      const JointModel& joint = model.joints()[model.links()[l].parent_joint];
+      const int v = joint.variable >= 0 ? joint.variable : joint.mimic_variable;
+      if (v >= 0 && std::find(variables.begin(), variables.end(), v) == variables.end())
+        variables.push_back(v);
+    }
+  };
+  int common = a;
+  while (common > 0 && !model.isDescendant(b, common))
+    common = model.links()[common].parent_link;
+  climb(a, common);
+  climb(b, common);
+  return variables.size();
+}
+
 }  // namespace
 
 std::pair<std::string, std::string> AllowedCollisionMatrix::ordered(const std::string& a, const std::string& b)
@@ -142,90 +238,22 @@ void CollisionWorld::computeAllowedCollisions(int samples, std::uint64_t seed)
   for (const auto& entry : acm_.entries())
     if (entry.second == "attached" || entry.second == "user")
       acm.allow(entry.first.first, entry.first.second, entry.second);
-
-  std::vector<int> link_body(model_.links().size(), -1);
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
-    if (!bodies_[b].object)
-      link_body[bodies_[b].link] = static_cast<int>(b);
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
-  {
-    if (bodies_[b].object)
-      continue;
-    for (int l = model_.links()[bodies_[b].link].parent_link; l >= 0; l = model_.links()[l].parent_link)
-      if (link_body[l] >= 0)
-      {
-        acm.allow(bodies_[b].name, bodies_[link_body[l]].name, "adjacent");
-        break;
-      }
-  }
-
+  allowAdjacentLinks(*this, acm);
   std::vector<std::pair<int, int>> candidates;
   for (std::size_t i = 0; i < bodies_.size(); ++i)
     for (std::size_t j = i + 1; j < bodies_.size(); ++j)
       if (!acm.allowed(bodies_[i].name, bodies_[j].name))
         candidates.emplace_back(static_cast<int>(i), static_cast<int>(j));
-  std::vector<int> hits(candidates.size(), 0);
-  std::vector<bool> near(candidates.size(), false);
-  std::mt19937_64 rng(seed);
-  Eigen::VectorXd variables(model_.variableCount());
-  std::vector<Eigen::Isometry3d> body_poses;
-  std::vector<Eigen::Isometry3d> element_poses(elements_.size());
-  std::vector<Eigen::Vector3d> centers(elements_.size()), halves(elements_.size());
-  for (int s = 0; s < samples; ++s)
-  {
-    for (std::size_t v = 0; v < model_.variableCount(); ++v)
-    {
-      const JointModel& joint = model_.joints()[model_.variableJoints()[v]];
-      variables[v] = std::uniform_real_distribution<double>(joint.lower, joint.upper)(rng);
-    }
-    bodyTransforms(variables, body_poses);
-    for (std::size_t e = 0; e < elements_.size(); ++e)
-    {
-      element_poses[e] = body_poses[elements_[e].body] * elements_[e].local;
-      elementAabb(elements_[e], element_poses[e], centers[e], halves[e]);
-    }
-    for (std::size_t c = 0; c < candidates.size(); ++c)
-    {
-      bool collide = false;
-      for (const int ea : bodies_[candidates[c].first].elements)
-        for (const int eb : bodies_[candidates[c].second].elements)
-        {
-          const Eigen::Vector3d margin = Eigen::Vector3d::Constant(kNearMargin);
-          if (!aabbOverlap(centers[ea], halves[ea] + margin, centers[eb], halves[eb] + margin))
-            continue;
-          near[c] = true;
-          if (!collide && aabbOverlap(centers[ea], halves[ea], centers[eb], halves[eb]))
-            collide = elementsCollide(elements_[ea], element_poses[ea], elements_[eb], element_poses[eb]);
-        }
-      hits[c] += collide ? 1 : 0;
-    }
-  }
-  const auto variablesBetween = [this](int a, int b) {
-    std::vector<int> variables;
-    const auto climb = [&](int from, int to) {
-      for (int l = from; l != to && l > 0; l = model_.links()[l].parent_link)
-      {
-        const JointModel& joint = model_.joints()[model_.links()[l].parent_joint];
-        const int v = joint.variable >= 0 ? joint.variable : joint.mimic_variable;
-        if (v >= 0 && std::find(variables.begin(), variables.end(), v) == variables.end())
-          variables.push_back(v);
-      }
-    };
-    int common = a;
-    while (common > 0 && !model_.isDescendant(b, common))
-      common = model_.links()[common].parent_link;
-    climb(a, common);
-    climb(b, common);
-    return variables.size();
-  };
+  const PairSamples sampled = samplePairs(*this, candidates, samples, seed);
   for (std::size_t c = 0; c < candidates.size(); ++c)
   {
     const CollisionBody& a = bodies_[candidates[c].first];
     const CollisionBody& b = bodies_[candidates[c].second];
     const bool same_robot = !a.robot.empty() && a.robot == b.robot;
-    if (hits[c] == samples && samples > 0 && (same_robot || (fixedInWorld(a) && fixedInWorld(b))))
+    if (sampled.hits[c] == samples && samples > 0 && (same_robot || (fixedInWorld(a) && fixedInWorld(b))))
       acm.allow(a.name, b.name, "always");
-    else if (samples > 0 && same_robot && hits[c] == 0 && (!near[c] || variablesBetween(a.link, b.link) <= 2))
+    else if (samples > 0 && same_robot && sampled.hits[c] == 0 &&
+             (!sampled.near[c] || variablesBetween(model_, a.link, b.link) <= 2))
       acm.allow(a.name, b.name, "never");
   }
   acm_ = acm;
