@@ -2,6 +2,9 @@
 """Brings a scene up headless under Xvfb with its own ROS master and saves one rviz frame.
 
   render_scene.py SCENE --out FILE.png [--width W] [--height H] [--timeout S] [--hide DISPLAY ...]
+                  [--ghost ROBOT=PRESET ...]
+
+--ghost starts the interaction node and poses that robot's ghost at a preset before the frame is taken.
 
 Prints progress to stderr and, last, one JSON line: the output file, the seconds from launch
 until the frame was taken, and the share of the 3D view that is not background.
@@ -65,7 +68,11 @@ def capture(display, path):
 def view_pixels(path):
     """RGB rows of the 3D view: the capture without rviz's menu and tool bars and status bar."""
     import matplotlib.image
-    image = (matplotlib.image.imread(path)[..., :3] * 255).astype('int16')
+    import numpy
+    image = matplotlib.image.imread(path)
+    if image.ndim == 2:  # a uniform frame (rviz not drawn yet) is saved as grey
+        image = numpy.stack([image] * 3, axis=2)
+    image = (image[..., :3] * 255).astype('int16')
     return image[70:-40, :, :]
 
 
@@ -96,6 +103,23 @@ def wait_for_scene(timeout):
     return len(links)
 
 
+def pose_ghost(spec, timeout):
+    """ROBOT=PRESET: the robot's ghost at that preset, through the interaction node's service."""
+    import rospy
+    from vrrw_msgs.srv import GhostPreset
+    robot, _, preset = spec.partition('=')
+    if not robot or not preset:
+        raise RuntimeError(f"'{spec}': expected ROBOT=PRESET")
+    try:
+        rospy.wait_for_service(f'/{robot}/ghost/preset', timeout)
+    except rospy.ROSException:
+        raise RuntimeError(f"'{spec}': no service /{robot}/ghost/preset (unknown robot?)")
+    answer = rospy.ServiceProxy(f'/{robot}/ghost/preset', GhostPreset)(preset)
+    if not answer.success:
+        raise RuntimeError(f"'{spec}': {answer.message}")
+    time.sleep(0.5)  # the ghost frames reach rviz
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument('scene')
@@ -104,6 +128,7 @@ def main():
     parser.add_argument('--height', type=int, default=960)
     parser.add_argument('--timeout', type=float, default=30.0)
     parser.add_argument('--hide', nargs='*', default=[], help='rviz displays to turn off (e.g. Robots Objects)')
+    parser.add_argument('--ghost', nargs='*', default=[], help='ROBOT=PRESET: pose a ghost (e.g. ur5e=square_left)')
     args = parser.parse_args()
     for tool in ('Xvfb', 'import', 'roslaunch'):
         if not shutil.which(tool):
@@ -124,7 +149,8 @@ def main():
         log(f'launching {args.scene} on display :{display}')
         launch_log = open(os.path.join(workdir, 'roslaunch.log'), 'w')
         processes.append(subprocess.Popen(['roslaunch', os.path.join(ROOT, 'launch', 'bringup.launch'),
-                                           f'scene:={args.scene}', 'rviz:=true', f'rviz_config:={config}'],
+                                           f'scene:={args.scene}', 'rviz:=true', f'rviz_config:={config}',
+                                           f'interaction:={"true" if args.ghost else "false"}'],
                                           env=env, stdout=launch_log, stderr=subprocess.STDOUT,
                                           start_new_session=True))
         try:
@@ -134,6 +160,11 @@ def main():
             with open(launch_log.name) as f:
                 sys.stderr.write(f.read()[-3000:])
             sys.exit(f'render: {error}')
+        try:
+            for ghost in args.ghost:
+                pose_ghost(ghost, args.timeout)
+        except RuntimeError as error:
+            sys.exit(f'render: --ghost {error}')
         log(f'{links} links in tf after {time.monotonic() - start:.1f} s; waiting for a still frame')
         frame, previous = os.path.join(workdir, 'frame.png'), None
         while True:

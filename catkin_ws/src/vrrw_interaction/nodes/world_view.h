@@ -1,0 +1,55 @@
+#pragma once
+#include <Eigen/Geometry>
+#include <geometry_msgs/PoseStamped.h>
+#include <mutex>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <string>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
+#include <vrrw_kinematics/collision_world.h>
+#include <vrrw_scene/scene.h>
+
+namespace vrrw_interaction
+{
+/// \brief What every arm's ghost, marker and hand share: the scene, its collision world with the live joint
+/// state and object poses, tf, the ghost frames and the event stream. `mutex` guards all of it (and every
+/// Arm, GhostRobot and Hand of the node).
+class WorldView
+{
+public:
+  WorldView(ros::NodeHandle& nh, const vrrw_scene::Scene& scene, std::string mode);
+
+  const vrrw_scene::Scene& scene() const { return scene_; }
+  const vrrw_kinematics::CollisionWorld& world() const { return world_; }
+  /// \brief fake, physics or none: how the robots move (free-drive differs).
+  const std::string& mode() const { return mode_; }
+  const Eigen::VectorXd& liveState() const { return live_; }
+  std::mutex& mutex() { return mutex_; }
+
+  /// \brief A stamped pose in the world; throws std::runtime_error "pose.header.frame_id: ..." or
+  /// "pose.pose.orientation: ..." (one line naming the field).
+  Eigen::Isometry3d poseInWorld(const geometry_msgs::PoseStamped& pose, const std::string& field = "pose") const;
+  /// \brief Publishes every link at `ghost_state` as tf frame ghost/<link> (rviz: RobotModel with TF prefix ghost).
+  void publishGhostFrames(const Eigen::VectorXd& ghost_state);
+  /// \brief One vrrw_msgs/Event on /operator/events.
+  void event(const std::string& robot, const std::string& kind, const std::string& detail);
+
+private:
+  void onJointStates(const sensor_msgs::JointState& msg);
+  void refreshObjects();
+
+  vrrw_scene::Scene scene_;
+  vrrw_kinematics::CollisionWorld world_;
+  std::string mode_;
+  Eigen::VectorXd live_;
+  std::mutex mutex_;
+  tf2_ros::Buffer tf_;
+  tf2_ros::TransformListener listener_;
+  tf2_ros::TransformBroadcaster broadcaster_;
+  ros::Subscriber joint_states_;
+  ros::Publisher events_;
+  ros::Timer objects_timer_;
+};
+}  // namespace vrrw_interaction

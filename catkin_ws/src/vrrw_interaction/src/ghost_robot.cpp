@@ -1,0 +1,160 @@
+#include <vrrw_interaction/ghost_robot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace vrrw_interaction
+{
+using vrrw_kinematics::ErrorCode;
+
+namespace
+{
+std::string fixed(double value, int digits)
+{
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << value;
+  return out.str();
+}
+}  // namespace
+
+std::string ikRefusal(const vrrw_kinematics::IkResult& ik)
+{
+  switch (ik.code)
+  {
+    case ErrorCode::NoSolution:
+      return "unreachable (residual " + fixed(ik.position_error, 3) + " m, " + fixed(ik.orientation_error, 3) + " rad)";
+    case ErrorCode::JointJump:
+      return "joint jump " + fixed(ik.jump, 2) + " rad (a branch flip; move the marker in smaller steps)";
+    case ErrorCode::InCollision:
+      return "collision: " + ik.contact.body_a + " - " + ik.contact.body_b;
+    default:
+      return ik.message;
+  }
+}
+
+GhostRobot::GhostRobot(vrrw_kinematics::Arm& arm, Presets presets, const Eigen::VectorXd& q)
+  : arm_(arm), presets_(std::move(presets)), q_(q)
+{
+}
+
+Eigen::Isometry3d GhostRobot::tcpPose(const Eigen::VectorXd& world_state)
+{
+  return arm_.basePose(world_state) * arm_.ikSolver().chain().fk(q_);
+}
+
+Outcome GhostRobot::moveTo(const Eigen::VectorXd& q, const Eigen::VectorXd& world_state, const std::string& what)
+{
+  if (const std::string violation = arm_.bounds().violation(q); !violation.empty())
+    return { false, what + ": " + violation };
+  if (const vrrw_kinematics::Contact contact = arm_.check(q, world_state); contact.collision)
+    return { false, what + ": collision: " + contact.body_a + " - " + contact.body_b };
+  q_ = q;
+  return { true, what };
+}
+
+Outcome GhostRobot::setJoints(const std::vector<std::string>& names, const std::vector<double>& positions,
+                              const Eigen::VectorXd& world_state)
+{
+  const std::vector<std::string>& joints = arm_.jointNames();
+  Eigen::VectorXd q = q_;
+  if (names.empty())
+  {
+    if (positions.size() != joints.size())
+      return { false, "position: " + std::to_string(positions.size()) + " values, the arm has " +
+                          std::to_string(joints.size()) + " joints" };
+    for (std::size_t i = 0; i < positions.size(); ++i)
+      q[static_cast<Eigen::Index>(i)] = positions[i];
+  }
+  else
+  {
+    if (names.size() != positions.size())
+      return { false, "name/position: " + std::to_string(names.size()) + " names but " +
+                          std::to_string(positions.size()) + " positions" };
+    for (std::size_t i = 0; i < names.size(); ++i)
+    {
+      const auto joint = std::find(joints.begin(), joints.end(), names[i]);
+      if (joint == joints.end())
+        return { false, "name[" + std::to_string(i) + "]: '" + names[i] + "' is not an arm joint of " + arm_.robot().name };
+      q[joint - joints.begin()] = positions[i];
+    }
+  }
+  for (Eigen::Index i = 0; i < q.size(); ++i)
+    if (!std::isfinite(q[i]))
+      return { false, "position: joint " + joints[static_cast<std::size_t>(i)] + " is not finite" };
+  return moveTo(q, world_state, "set_joints");
+}
+
+Outcome GhostRobot::setPose(const Eigen::Isometry3d& target, const Eigen::VectorXd& world_state, double max_jump,
+                            Eigen::Vector2d* residual)
+{
+  vrrw_kinematics::IkOptions options;
+  options.max_jump = max_jump;
+  options.timeout = 0.003;  // numeric chains at drag rate; a closed form answers in microseconds
+  const vrrw_kinematics::IkResult ik = arm_.solveCollisionFree(target, q_, world_state, options);
+  if (residual)
+    *residual = Eigen::Vector2d(ik.position_error, ik.orientation_error);
+  if (!ik.success)
+    return { false, ikRefusal(ik) };
+  q_ = ik.q;
+  return { true, "set_pose" };
+}
+
+Outcome GhostRobot::preset(const std::string& name, const Eigen::VectorXd& world_state)
+{
+  if (!presets_.has(name))
+  {
+    try
+    {
+      presets_.at(name);
+    }
+    catch (const PresetError& e)
+    {
+      return { false, e.what() };
+    }
+  }
+  // A preset is a named joint pose and is taken as it is (the paper's zero stretches a table-mounted UR
+  // into the table): only limits refuse it; a collision is reported, and planning to it will refuse.
+  const Eigen::VectorXd& q = presets_.at(name);
+  if (const std::string violation = arm_.bounds().violation(q); !violation.empty())
+    return { false, "preset " + name + ": " + violation };
+  q_ = q;
+  if (const vrrw_kinematics::Contact contact = arm_.check(q, world_state); contact.collision)
+    return { true, "preset " + name + " (in collision: " + contact.body_a + " - " + contact.body_b + ")" };
+  return { true, "preset " + name };
+}
+
+Outcome GhostRobot::reset(const Eigen::VectorXd& world_state)
+{
+  q_ = arm_.jointValues(world_state);
+  return { true, "reset: the ghost is at the robot" };
+}
+
+Outcome GhostRobot::addWaypoint()
+{
+  waypoints_.push_back(q_);
+  return { true, "waypoint " + std::to_string(waypoints_.size() - 1) + " added (" +
+                     std::to_string(waypoints_.size()) + " in all)" };
+}
+
+Outcome GhostRobot::clearWaypoints()
+{
+  const std::size_t count = waypoints_.size();
+  waypoints_.clear();
+  return { true, std::to_string(count) + " waypoints cleared" };
+}
+
+vrrw_kinematics::TrajectoryResult GhostRobot::plan(const Eigen::VectorXd& world_state, double time_limit)
+{
+  vrrw_kinematics::TrajectoryRequest request;
+  request.plan.start = arm_.jointValues(world_state);
+  request.plan.goal_joints = q_;
+  request.plan.time_limit = time_limit > 0.0 ? time_limit : 1.0;
+  request.waypoints = waypoints_;
+  vrrw_kinematics::TrajectoryResult result = arm_.planTrajectory(request, world_state);
+  if (result.success)
+    last_plan_ = result.trajectory;
+  return result;
+}
+}  // namespace vrrw_interaction

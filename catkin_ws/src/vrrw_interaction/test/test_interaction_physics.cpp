@@ -1,0 +1,59 @@
+// Node test (rostest, real master, real Bullet physics): a scripted hand drags the free-driven UR5e's
+// wrist 20 cm at 0.2 m/s; releasing with rigid drives freezes it; a ghost plan executes within tolerance.
+#include <vrrw_msgs/GhostExecute.h>
+#include <vrrw_msgs/GhostPlan.h>
+#include <vrrw_msgs/GhostPreset.h>
+
+#include "../bench/hand_drag.h"
+#include "interaction_fixture.h"
+
+using namespace vrrw_interaction_test;
+
+namespace
+{
+ros::NodeHandle* nh = nullptr;
+tf2_ros::Buffer* tf = nullptr;
+}  // namespace
+
+TEST(InteractionPhysics, AHandDragsTheWristAndReleasingFreezesIt)
+{
+  const auto figures = vrrw_interaction_bench::dragWrist(*nh, *tf, 0.2, 0.2, 2.0);
+  ASSERT_EQ(figures.error, "");
+  std::cout << "grabbed " << figures.body << ": rms " << figures.rms << " m, max " << figures.max << " m over "
+            << figures.samples << " samples; drift " << figures.drift << " m in 2 s\n";
+  EXPECT_EQ(figures.body.rfind("ur5e_", 0), 0u);
+  EXPECT_LT(figures.rms, 0.02);
+  EXPECT_LT(figures.drift, 1e-3);
+}
+
+TEST(InteractionPhysics, AGhostPlanExecutesWithinTheGoalTolerance)
+{
+  Latest<sensor_msgs::JointState> robot(*nh, "/ur5e/joint_states");
+  vrrw_msgs::GhostPreset preset;
+  preset.request.name = "square_center";
+  ASSERT_TRUE(call("/ur5e/ghost/preset", preset).response.success);
+  vrrw_msgs::GhostPlan plan;
+  plan = call("/ur5e/ghost/plan", plan);
+  ASSERT_TRUE(plan.response.success) << plan.response.message;
+  const auto execute = call<vrrw_msgs::GhostExecute>("/ur5e/ghost/execute");
+  ASSERT_TRUE(execute.response.success) << execute.response.message << " " << execute.response.error_string;
+  ros::WallDuration(0.2).sleep();
+  const auto& goal = plan.response.trajectory.points.back().positions;
+  const Eigen::VectorXd q = arm6(robot.last());
+  for (int j = 0; j < 6; ++j)
+    EXPECT_NEAR(q[j], goal[j], 0.01) << "joint " << j;
+}
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_interaction_physics");
+  ros::NodeHandle handle;
+  nh = &handle;
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  tf = &buffer;
+  return RUN_ALL_TESTS();
+}
