@@ -108,7 +108,7 @@ public:
     services_.push_back(nh.advertiseService("/demos/start", &RecorderNode::onStart, this));
     services_.push_back(nh.advertiseService("/demos/stop", &RecorderNode::onStop, this));
     services_.push_back(nh.advertiseService("/demos/annotate", &RecorderNode::onAnnotate, this));
-    timer_ = nh.createWallTimer(ros::WallDuration(0.2), [this](const ros::WallTimerEvent&) { poll(); });
+    timer_ = nh.createWallTimer(ros::WallDuration(0.05), [this](const ros::WallTimerEvent&) { poll(); });
     const std::string file = pnh.param<std::string>("file", "");
     if (!file.empty())
     {

@@ -151,13 +151,6 @@ int runReplay(int argc, char** argv)
     if (answer != "yes")
       throw DemoError("replay: not confirmed; nothing sent");
   }
-  if (mode == "physics" && !options.has("segment"))
-  {
-    std_srvs::Trigger reset;
-    if (!ros::service::call("/physics/reset", reset) || !reset.response.success)
-      throw DemoError("replay: /physics/reset failed: " + reset.response.message);
-    std::cout << "replay: physics reset to the scene's start\n";
-  }
 
   ArmClient arm(ns + "arm_controller/follow_joint_trajectory", true);
   GripperClient gripper(ns + "gripper_controller/gripper_cmd", true);
@@ -190,6 +183,16 @@ int runReplay(int argc, char** argv)
   if (!send(arm, goal, "to the recorded start", move_time + 10.0, ns, mode == "real") ||
       !send(gripper, gripperGoal(track.states.front().gripper), "gripper to the recorded start", 10.0))
     return 1;
+  // The controller now holds the recorded start (a demonstration starts from the scene's reset state), so
+  // the reset puts the objects back without the arm jumping to an older command.
+  if (mode == "physics" && !options.has("segment"))
+  {
+    std_srvs::Trigger reset;
+    if (!ros::service::call("/physics/reset", reset) || !reset.response.success)
+      throw DemoError("replay: /physics/reset failed: " + reset.response.message);
+    ros::Duration(0.5).sleep();
+    std::cout << "replay: physics reset to the scene's start\n";
+  }
 
   // The replay: the trajectory, gripper goals at their recorded (scaled) times, every joint state kept.
   std::mutex mutex;

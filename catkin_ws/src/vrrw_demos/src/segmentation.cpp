@@ -9,6 +9,9 @@ namespace
 {
 using Interval = std::pair<double, double>;
 
+/// rad (m): a gripper goal whose motion ends farther than this from it stalled on something.
+constexpr double kStallGap = 0.02;
+
 /// Intervals where speed(k) > fast, pauses shorter than min_still merged, ends walked out to rest speed.
 template <class Speed>
 std::vector<Interval> motions(const std::vector<double>& times, Speed speed, double fast, double rest,
@@ -80,7 +83,22 @@ std::string heldObject(const Demonstration& demo, double from, double to, double
 struct GripperAction
 {
   double start, end, target;
+  double direction;  ///< +1 or -1: the sign of the motion (of the goal, when there is one)
+  bool stalled;      ///< stopped short of its goal: closed on an object
 };
+
+/// The closing direction: that of an action that stalled on an object, else that of the first action
+/// after the arm began to move (a pick-and-place closes first); 0 when there is no action.
+double closingDirection(const std::vector<GripperAction>& actions, double arm_start)
+{
+  for (const GripperAction& action : actions)
+    if (action.stalled)
+      return action.direction;
+  for (const GripperAction& action : actions)
+    if (action.start >= arm_start)
+      return action.direction;
+  return actions.empty() ? 0.0 : actions.front().direction;
+}
 
 std::vector<GripperAction> gripperActions(const RobotTrack& track, const SegmentationOptions& options)
 {
@@ -105,11 +123,18 @@ std::vector<GripperAction> gripperActions(const RobotTrack& track, const Segment
         end = move.second;
         break;
       }
-    actions.push_back({ goal.time, end, goal.position });
+    const double from = stateAt(track, goal.time).gripper, reached = stateAt(track, end).gripper;
+    if (std::abs(goal.position - from) < kStallGap && end == goal.time)
+      continue;  // asked to be where it was: nothing happened
+    actions.push_back({ goal.time, end, goal.position, goal.position >= from ? 1.0 : -1.0,
+                        std::abs(reached - goal.position) > kStallGap });
   }
   if (track.gripper_goals.empty())
     for (const Interval& move : moves)
-      actions.push_back({ move.first, move.second, stateAt(track, move.second).gripper });
+    {
+      const double from = stateAt(track, move.first).gripper, reached = stateAt(track, move.second).gripper;
+      actions.push_back({ move.first, move.second, reached, reached >= from ? 1.0 : -1.0, false });
+    }
   return actions;
 }
 }  // namespace
@@ -187,10 +212,11 @@ Segmentation segmentPickPlace(const RobotTrack& track, const Demonstration& demo
   }
   const GripperAction* close = nullptr;
   const GripperAction* open = nullptr;
+  const double closing = closingDirection(actions, arm.front().first);
   for (const GripperAction& action : actions)
-    if (!close && action.start >= arm.front().first)
+    if (!close && action.direction == closing)
       close = &action;
-    else if (close && !open && action.start > close->start)
+    else if (close && !open && action.direction != closing)
       open = &action;
   const double close_time = close ? close->start : track.states.back().time;
   const double open_time = open ? open->start : track.states.back().time;
@@ -198,8 +224,8 @@ Segmentation segmentPickPlace(const RobotTrack& track, const Demonstration& demo
   auto armSegments = [&](double from, double to, const char* first, const char* last, bool first_optional) {
     std::vector<Interval> inside;
     for (const Interval& motion : arm)
-      if (motion.first >= from - 1e-9 && motion.first < to)
-        inside.push_back({ motion.first, std::min(motion.second, to) });
+      if (motion.second > from && motion.first < to)
+        inside.push_back({ std::max(motion.first, from), std::min(motion.second, to) });
     if (inside.empty())
       return;
     if (inside.size() >= 2)
@@ -211,7 +237,7 @@ Segmentation segmentPickPlace(const RobotTrack& track, const Demonstration& demo
   armSegments(arm.front().first, close_time, "near_pick", "pick", false);
   if (!close)
   {
-    out.warnings.push_back("robot '" + track.robot + "': no gripper action after the arm moved: no close_gripper");
+    out.warnings.push_back("robot '" + track.robot + "': the gripper never moved: no close_gripper");
     return out;
   }
   const std::string object = heldObject(demo, close->end, open_time, options.object_moved);

@@ -227,6 +227,13 @@ TEST(Recorder, BagToCsvToBagToCsvIsIdenticalAndStandardToolsReadIt)
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 10001);
   ASSERT_EQ(run("rosbag info " + bag, &output), 0);
   EXPECT_NE(output.find("/r4/joint_states   10000 msgs"), std::string::npos) << output;
+  ASSERT_EQ(run("rosbag play -q -u 0.5 " + bag, &output), 0) << output;
+  ASSERT_EQ(run(VRRW_ROOT "/.venv/bin/python " VRRW_ROOT "/catkin_ws/src/vrrw_demos/test/read_with_rosbags.py " + bag,
+                &output), 0) << output;
+  EXPECT_NE(output.find("/r4/joint_states 10000\n"), std::string::npos) << output;
+  EXPECT_NE(output.find("last r1 position[0] 9999.0\n"), std::string::npos) << output;
+  ASSERT_EQ(run(VRRW_SCRIPT " dmp learn --demo " + bag + " --robot r1 --out " + folder() + "/r1.yaml", &output), 0)
+      << output;
 
   EXPECT_EQ(run(VRRW_TOOL " export " + bag + " --csv " + csv1 + " --robot r2", &output), 1);
   EXPECT_EQ(output, "vrrw demos export: " + csv1 + ": exists; not overwritten (remove it or choose another name)\n");

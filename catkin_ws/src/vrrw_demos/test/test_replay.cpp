@@ -67,7 +67,11 @@ TEST(Replay, WholeDemonstrationFollowsTheDejitteredPath)
     EXPECT_LE(field(output, "max_error"), 1e-9) << output;
   else
     EXPECT_LE(field(output, "rms_error"), 2e-3) << output;
-  EXPECT_NE(output.find("replay: gripper -> 0.8"), std::string::npos) << output;
+  // The imported bag has no gripper goals: the gripper's own close and open become two goals.
+  std::size_t goals = 0;
+  for (auto at = output.find("replay: gripper -> "); at != std::string::npos; at = output.find("replay: gripper -> ", at + 1))
+    ++goals;
+  EXPECT_EQ(goals, 2u) << output;
 }
 
 TEST(Replay, OneSegmentAndBadInput)
@@ -99,6 +103,5 @@ int main(int argc, char** argv)
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "fake" || std::string(argv[i]) == "physics")
       g_mode = argv[i];
-  ros::Time::waitForValid();
   return RUN_ALL_TESTS();
 }

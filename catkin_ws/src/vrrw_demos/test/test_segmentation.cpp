@@ -63,7 +63,23 @@ TEST(Segmentation, WithoutBackToNearPickAndWithoutGripperSaysWhy)
   const Segmentation found = segmentPickPlace(track, scripted.demo);
   ASSERT_EQ(found.segments.size(), 2u);  // near_pick, pick: the arm moved four times, nothing closed
   ASSERT_EQ(found.warnings.size(), 1u);
-  EXPECT_EQ(found.warnings[0], "robot 'ur5e': no gripper action after the arm moved: no close_gripper");
+  EXPECT_EQ(found.warnings[0], "robot 'ur5e': the gripper never moved: no close_gripper");
+}
+
+TEST(Segmentation, AGraspThatStallsSetsTheClosingDirectionEvenBeforeTheArmMoves)
+{
+  auto scripted = vrrw_demos_test::scriptedPickPlace();
+  RobotTrack& track = scripted.demo.robots[0];
+  // An open goal at 0.1 s that opens nothing more, then the scripted close stops at 0.5 of its 0.8 goal.
+  for (RobotState& state : track.states)
+    state.gripper = std::min(state.gripper, 0.5);
+  track.gripper_goals.insert(track.gripper_goals.begin(), GripperGoal{ 0.1, 0.0 });
+  const Segmentation found = segmentPickPlace(track, scripted.demo);
+  ASSERT_EQ(found.segments.size(), 6u);
+  EXPECT_EQ(found.segments[2].name, "close_gripper");
+  EXPECT_DOUBLE_EQ(found.segments[2].start, 3.9);
+  EXPECT_EQ(found.segments[5].name, "open_gripper");
+  EXPECT_DOUBLE_EQ(found.segments[5].start, 8.8);
 }
 
 TEST(Segmentation, SliceKeepsTimesAndInterpolatesEnds)
