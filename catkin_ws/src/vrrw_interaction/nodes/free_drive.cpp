@@ -141,7 +141,9 @@ void FreeDrive::onPose(Tracker& tracker, const geometry_msgs::PoseStamped& msg)
   // the open hand pushes, once clear of what it let go (a sphere appearing inside a link would kick it)
   if (!tracker.pushes)
     tracker.pushes = !nearestBody(view_.world(), view_.liveState(), tracker.hand.pose().translation(),
-                                  hand_radius_ + 0.01, [](const auto&) { return true; });
+                                  hand_radius_ + 0.01, [this](const vrrw_kinematics::CollisionBody& body) {
+                                    return !body.object || !view_.scene().object(body.name)->fixed;
+                                  });
   publishHand(tracker, tracker.pushes ? hand_radius_ : 0.0);
 }
 

@@ -44,6 +44,32 @@ TEST(InteractionPhysics, AGhostPlanExecutesWithinTheGoalTolerance)
     EXPECT_NEAR(q[j], goal[j], 0.01) << "joint " << j;
 }
 
+TEST(InteractionPhysics, AnOpenHandPushesTheDrill)
+{
+  const auto drillAt = []() -> Eigen::Vector3d {
+    return tf2::transformToEigen(tf->lookupTransform("world", "drill", ros::Time(0), ros::Duration(2.0))).translation();
+  };
+  const Eigen::Vector3d start = drillAt();
+  ros::Publisher pose_pub = nh->advertise<geometry_msgs::PoseStamped>("/operator/pusher/pose", 10);
+  geometry_msgs::PoseStamped pose;
+  pose.header.frame_id = "world";
+  pose.pose.orientation.w = 1.0;
+  const Eigen::Vector3d from = start + Eigen::Vector3d(0, -0.15, 0.03);
+  pose.pose.position = tf2::toMsg(from);
+  for (int i = 0; i < 300 && pose_pub.getNumSubscribers() == 0; ++i, ros::WallDuration(0.01).sleep())
+    pose_pub.publish(pose);  // the node finds new hands once a second
+  ASSERT_GT(pose_pub.getNumSubscribers(), 0u);
+  for (int i = 0; i <= 150; ++i, ros::WallDuration(0.01).sleep())  // open hand, 20 cm along +y in 1 s, then rest
+  {
+    pose.header.stamp = ros::Time::now();
+    pose.pose.position = tf2::toMsg(Eigen::Vector3d(from + Eigen::Vector3d(0, 0.2 * std::min(1.0, i / 100.0), 0)));
+    pose_pub.publish(pose);
+  }
+  const Eigen::Vector3d moved = drillAt() - start;
+  std::cout << "drill pushed " << moved.transpose() << " m\n";
+  EXPECT_GT(moved.y(), 0.02);
+}
+
 int main(int argc, char** argv)
 {
   testing::InitGoogleTest(&argc, argv);
