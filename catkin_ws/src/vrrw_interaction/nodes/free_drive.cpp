@@ -250,6 +250,11 @@ void FreeDrive::tick()
     {
       if (tracker->hand.held() && tracker->hand.stale(now))
         release(*tracker, "stale: no pose for 0.5 s");
+      if (tracker->pushes && tracker->hand.stale(now, 0.4))  // take the sphere away before physics has to
+      {
+        publishHand(*tracker, 0.0);
+        tracker->pushes = false;
+      }
       if (!tracker->hand.hasPose())
         continue;
       visualization_msgs::Marker sphere;
