@@ -69,6 +69,21 @@ class Bringup(unittest.TestCase):
                    if not self.tf.can_transform('world', link, rospy.Time(0), rospy.Duration(20))]
         self.assertEqual(missing, [], f'{len(missing)} of {len(self.links)} links not in tf')
 
+    def test_every_joint_states_message_holds_every_robot(self):
+        # robot_state_publisher keeps one queued message: a robot left out of a message can be starved.
+        held = set()
+        for name in self.robots:
+            held.update(rospy.wait_for_message(f'/{name}/joint_states', JointState, 10).name)
+        messages = []
+        subscriber = rospy.Subscriber('/joint_states', JointState, messages.append)
+        deadline = rospy.Time.now() + rospy.Duration(1.0)
+        while rospy.Time.now() < deadline:
+            rospy.sleep(0.05)
+        subscriber.unregister()
+        self.assertGreater(len(messages), 5)
+        partial = [sorted(held - set(m.name)) for m in messages if not held <= set(m.name)]
+        self.assertEqual(partial, [], f'{len(partial)} of {len(messages)} /joint_states messages lack joints')
+
     def test_every_robot_name_is_its_own_prefix(self):
         owners = {}
         for name, robot in self.robots.items():

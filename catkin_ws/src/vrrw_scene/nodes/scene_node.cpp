@@ -130,7 +130,11 @@ int main(int argc, char** argv)
     ros::spin();
     return 0;
   }
+  // One /joint_states message per cycle holding every robot's joints: robot_state_publisher subscribes
+  // with a queue of one, so of several messages sent back to back it may keep only the last, and a
+  // robot whose message is always overwritten never gets its links into tf.
   auto all_pub = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+  sensor_msgs::JointState all;
   std::vector<std::pair<ros::Publisher, sensor_msgs::JointState>> robots;
   for (const auto& robot : scene.robots)
   {
@@ -139,20 +143,25 @@ int main(int argc, char** argv)
     {
       state.name.push_back(joint);
       state.position.push_back(value);
-      state.velocity.push_back(0.0);
-      state.effort.push_back(0.0);
     }
+    state.velocity.assign(state.name.size(), 0.0);
+    state.effort.assign(state.name.size(), 0.0);
+    all.name.insert(all.name.end(), state.name.begin(), state.name.end());
+    all.position.insert(all.position.end(), state.position.begin(), state.position.end());
     robots.emplace_back(nh.advertise<sensor_msgs::JointState>(robot.name + "/joint_states", 10), state);
   }
+  all.velocity.assign(all.name.size(), 0.0);
+  all.effort.assign(all.name.size(), 0.0);
   ros::Rate rate(rate_hz);
   while (ros::ok())
   {
+    all.header.stamp = ros::Time::now();
     for (auto& [pub, state] : robots)
     {
-      state.header.stamp = ros::Time::now();
+      state.header.stamp = all.header.stamp;
       pub.publish(state);
-      all_pub.publish(state);
     }
+    all_pub.publish(all);
     ros::spinOnce();
     rate.sleep();
   }

@@ -24,7 +24,7 @@ namespace vrrw_scene
 {
 namespace
 {
-constexpr const char* kCacheVersion = "vrrw-scene-1";
+constexpr const char* kCacheVersion = "vrrw-scene-2";
 
 std::string readFile(const std::string& path)
 {

@@ -56,6 +56,9 @@ RobotSpec parseRobot(const YamlField& entry, const Catalog& catalog, const std::
     robot.model = "custom";
     robot.description = resolveFile(entry["description"], scene_file);
     robot.tip_link = entry["tip_link"].asString();
+    if (!entry.has("config"))  // planning and the controllers need an acceleration limit for every joint
+      throw SceneError(robot.field + ".config: missing; a robot with its own description needs a config file "
+                       "(acceleration_limits per joint, as urdf/config/*.yaml)");
   }
   else
   {

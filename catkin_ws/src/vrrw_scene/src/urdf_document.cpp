@@ -14,6 +14,8 @@
 #include "vrrw_scene/mesh_path.h"
 #include "vrrw_scene/scene.h"
 
+#include "urdf_physics_check.h"
+
 namespace fs = std::filesystem;
 using tinyxml2::XMLDocument;
 using tinyxml2::XMLElement;
@@ -198,6 +200,7 @@ void checkUrdf(const std::string& urdf, const std::string& source)
       throw SceneError(source + ":" + std::to_string(link->GetLineNum()) + ": link: has no name");
     if (!links.insert(name).second)
       throw SceneError(source + ": link '" + name + "': defined twice");
+    checkLinkInertia(*link, source);
     for (auto* part = link->FirstChildElement(); part; part = part->NextSiblingElement())
     {
       auto* geometry = part->FirstChildElement("geometry");
@@ -223,6 +226,7 @@ void checkUrdf(const std::string& urdf, const std::string& source)
       throw SceneError(where + ": child link '" + child + "' does not exist");
     if (!parent_of.emplace(child, name).second)
       throw SceneError(where + ": link '" + child + "' already has parent joint '" + parent_of[child] + "'");
+    checkJointMotion(*joint, source);
   }
 }
 

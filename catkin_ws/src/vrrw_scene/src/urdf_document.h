@@ -17,7 +17,8 @@ std::string runXacro(const std::string& xacro, const std::string& document_path)
 std::string addCustomRobot(const std::string& urdf, const RobotSpec& robot, const std::string& xacro);
 
 /// \brief Checks what urdfdom would let pass or report badly: every joint's parent and child link
-/// exist, names are unique, every mesh file exists. Throws SceneError naming source, element and reason.
+/// exist, names are unique, every mesh file exists, joint limits and axes and link inertias are physical
+/// (urdf_physics_check.h). Throws SceneError naming source, element and reason.
 void checkUrdf(const std::string& urdf, const std::string& source);
 
 /// \brief The document without the given links and the joints that lead to them.

@@ -133,6 +133,46 @@ TEST(BadScene, JointWithMissingParentLink)
                                                     "parent link 'link0' does not exist" });
 }
 
+/// A robot description no node can use, rejected at scene load with file:line: element: field: reason.
+struct BadUrdf
+{
+  const char* scene;
+  std::vector<const char*> message;
+};
+
+class BadUrdfScene : public testing::TestWithParam<BadUrdf>
+{
+};
+
+TEST_P(BadUrdfScene, IsRejectedWithFileLineFieldAndReason)
+{
+  const std::string message = errorOf(GetParam().scene);
+  for (const char* part : GetParam().message)
+    EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' missing from: " << message;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Corpus, BadUrdfScene,
+    testing::Values(
+        BadUrdf{ "joint_limits_reversed.yaml",
+                 { "joint_limits_reversed.urdf:14: joint 'joint1': limit lower: 2 is above the upper limit -2" } },
+        BadUrdf{ "zero_velocity.yaml",
+                 { "zero_velocity.urdf:18: joint 'joint2': limit velocity: must be greater than zero, got 0" } },
+        BadUrdf{ "zero_axis.yaml", { "zero_axis.urdf:14: joint 'joint1': axis xyz: the axis is zero" } },
+        BadUrdf{ "custom_robot_without_config.yaml",
+                 { "custom_robot_without_config.yaml:2: robots[0].config: missing; a robot with its own description "
+                   "needs a config file" } },
+        BadUrdf{ "zero_mass.yaml", { "zero_mass.urdf:9: link 'link2': inertial mass: must be greater than zero, got 0" } },
+        BadUrdf{ "negative_inertia.yaml",
+                 { "negative_inertia.urdf:5: link 'link1': inertial inertia ixx: must not be negative, got -0.01" } },
+        BadUrdf{ "inertia_triangle.yaml",
+                 { "inertia_triangle.urdf:9: link 'link2': inertial inertia: principal moments 0.005, 0.005, 0.02 "
+                   "break the triangle inequality (0.02 > 0.01)" } }),
+    [](const testing::TestParamInfo<BadUrdf>& info) {
+      const std::string file = info.param.scene;
+      return file.substr(0, file.find('.'));
+    });
+
 TEST(BadScene, UnknownSceneNameListsShippedScenes)
 {
   try

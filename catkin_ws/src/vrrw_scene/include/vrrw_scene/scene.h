@@ -76,8 +76,8 @@ struct Robot
   std::map<std::string, double> initial_positions;  ///< every movable joint
   std::string config_file;  ///< urdf/config/<model>.yaml: acceleration limits and drive gains
   std::string gripper_config_file;  ///< urdf/config/<gripper>.yaml, or empty
-  /// \brief rad/s^2 (m/s^2 prismatic) of every movable joint, from config_file and the gripper's config;
-  /// empty for a robot with its own description (it has no config).
+  /// \brief rad/s^2 (m/s^2 prismatic) of every movable joint, from config_file and the gripper's config
+  /// (a robot with its own description brings its `config:`, required at scene load).
   std::map<std::string, double> acceleration_limits;
   /// \brief Drive gains of every movable joint that is not a mimic joint, from config_file (gripper joints
   /// from gripper_config_file); JointGains' defaults where a config has no `drives` (or the robot no config).

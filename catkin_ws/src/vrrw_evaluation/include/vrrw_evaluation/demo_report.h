@@ -1,0 +1,58 @@
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include <vrrw_evaluation/demonstration.h>
+
+namespace vrrw_evaluation
+{
+/// \brief One generalization trial: where the object stood, and how it ended.
+struct TrialRecord
+{
+  int trial = 0;
+  double x = 0.0, y = 0.0, yaw_deg = 0.0;  ///< the object's start (world)
+  bool executed = false;  ///< false: skipped (unreachable or colliding pose)
+  bool success = false;
+  std::string reason;
+  double final_error_m = 0.0;
+  double final_angle_deg = 0.0;
+  double ik_ms = 0.0;  ///< goal transfer: every IK of the trial
+};
+
+/// \brief Everything `./vrrw demo` measured; written as metrics.json, report.md and index.html.
+struct DemoReport
+{
+  std::string scene;
+  std::string teach_source;  ///< how the demonstration was made
+  std::uint64_t seed = 0;
+  double teach_seconds = 0.0;
+  std::uint64_t bag_messages = 0;
+  std::string bag_file;  ///< the demonstration's bag
+  std::map<std::string, std::uint64_t> message_counts;  ///< per topic
+  std::vector<Segment> segments;
+  double replay_joint_rms_rad = 0.0;
+  std::map<std::string, double> replay_segment_rms_rad;
+  double replay_object_position_error_m = 0.0;
+  double replay_object_angle_error_deg = 0.0;
+  std::map<std::string, double> dmp_fit_rmse_rad;
+  std::vector<TrialRecord> trials;
+  double plan_ms = 0.0;      ///< planning time of the teach stage's planned motions
+  double physics_rtf = 0.0;  ///< simulated seconds per wall second
+  std::map<std::string, double> stage_seconds;
+  double wall_seconds = 0.0;
+
+  int trialCount() const { return int(trials.size()); }
+  int successCount() const;
+  double successRate() const;
+};
+
+/// \brief metrics.json (the keys, dots as nesting, and more).
+std::string metricsJson(const DemoReport& report);
+/// \brief report.md: the metrics table and the trials.
+std::string reportMarkdown(const DemoReport& report);
+/// \brief index.html: the same with the frame strips and plots the plot script draws beside it.
+std::string reportHtml(const DemoReport& report);
+/// \brief Writes the three into `directory` (created); throws std::runtime_error naming a file it cannot write.
+void writeReport(const DemoReport& report, const std::string& directory);
+}  // namespace vrrw_evaluation

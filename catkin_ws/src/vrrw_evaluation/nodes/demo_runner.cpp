@@ -1,0 +1,157 @@
+// demo_runner: the stages of `./vrrw demo` against a running physics workspace (run_demo.py starts it).
+//   demo_runner --scene S [--trials N] [--seed S] [--out DIR] [--shown N] [--capture CMD] [--check]
+// --check only validates the scene (a robot with a gripper, a graspable object) and exits.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <ros/ros.h>
+#include <vrrw_scene/scene_loader.h>
+
+#include "../src/ros/pick_place_demo.h"
+
+using namespace vrrw_evaluation;
+
+namespace
+{
+struct Cell
+{
+  vrrw_scene::Robot robot;
+  std::string object;
+  std::set<std::string> obstacles;
+};
+
+/// The robot with a gripper and the object the demo knows a grasp for; one clear line otherwise.
+bool findCell(const std::string& scene_name, Cell& cell, std::string& error)
+{
+  vrrw_scene::Scene scene;
+  try
+  {
+    scene = vrrw_scene::loadScene(scene_name);
+  }
+  catch (const std::exception& e)
+  {
+    return error = e.what(), false;
+  }
+  const auto robot = std::find_if(scene.robots.begin(), scene.robots.end(),
+                                  [](const vrrw_scene::Robot& r) { return !r.gripper.empty(); });
+  if (robot == scene.robots.end())
+    return error = scene_name + ": robots: no robot with a gripper to pick with", false;
+  std::string names;
+  for (const vrrw_scene::Object& object : scene.objects)
+  {
+    names += (names.empty() ? "" : ", ") + object.name + " (" + object.kind + (object.fixed ? ", fixed)" : ")");
+    cell.obstacles.insert(object.name);
+    if (cell.object.empty() && !object.fixed && object.kind == "drill")
+      cell.object = object.name;
+  }
+  if (cell.object.empty())
+    return error = scene_name + ": objects: no graspable object (the demo picks a movable object of kind 'drill'; " +
+                   "the scene has: " + (names.empty() ? "none" : names) + ")",
+           false;
+  cell.robot = *robot;
+  return true;
+}
+
+bool parse(int argc, char** argv, std::string& scene, DemoOptions& options, bool& check)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string flag = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (flag == "--check")
+      check = true;
+    else if (flag == "--scene" && has_value)
+      scene = argv[++i];
+    else if (flag == "--trials" && has_value)
+      options.trials = std::atoi(argv[++i]);
+    else if (flag == "--seed" && has_value)
+      options.seed = std::strtoull(argv[++i], nullptr, 10);
+    else if (flag == "--out" && has_value)
+      options.out = argv[++i];
+    else if (flag == "--shown" && has_value)
+      options.shown_trials = std::atoi(argv[++i]);
+    else if (flag == "--capture" && has_value)
+      options.capture_command = argv[++i];
+    else
+      return std::cerr << "demo_runner: unknown or incomplete option '" << flag << "'\n", false;
+  }
+  if (options.trials < 0 || options.trials > 1000)
+    return std::cerr << "demo_runner: --trials: " << options.trials << " outside [0, 1000]\n", false;
+  return !scene.empty() || (std::cerr << "demo_runner: --scene is required\n", false);
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "demo_runner", ros::init_options::AnonymousName);
+  std::string scene;
+  DemoOptions options;
+  bool check = false;
+  if (!parse(argc, argv, scene, options, check))
+    return 2;
+  Cell cell;
+  std::string error;
+  if (!findCell(scene, cell, error))
+    return std::cerr << "demo: " << error << "\n", 2;
+  if (check)
+    return std::printf("demo: %s: robot %s picks '%s'\n", scene.c_str(), cell.robot.name.c_str(), cell.object.c_str()), 0;
+
+  const auto start = std::chrono::steady_clock::now();
+  ros::NodeHandle node;
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  WorkspaceClient client(node, cell.robot, cell.object, cell.obstacles);
+  if (!client.waitUntilReady(60.0, error))
+    return spinner.stop(), std::cerr << "demo: " << error << "\n", 1;
+  DemoReport report;
+  report.scene = scene;
+  report.seed = options.seed;
+  PickPlaceDemo demo(client, options);
+  Demonstration demonstration;
+  auto stage = [&](const char* name, const std::function<bool()>& run) {
+    std::printf("demo: %s ...\n", name);
+    std::fflush(stdout);
+    const auto stage_start = std::chrono::steady_clock::now();
+    const bool ok = run();
+    report.stage_seconds[name] = secondsSince(stage_start);
+    std::printf("demo: %s %s in %.1f s\n", name, ok ? "done" : "FAILED", report.stage_seconds[name]);
+    return ok;
+  };
+  bool ok = stage("1 teach", [&] { return demo.teach(demonstration, report, error); });
+  if (ok)
+    ok = stage("2 segment", [&] {
+      for (const Segment& s : demonstration.segments)
+        std::printf("demo:   %-18s %7.3f .. %7.3f s\n", s.name.c_str(), s.start, s.end);
+      return demonstration.segments.size() == kInstructions.size();
+    });
+  if (ok)
+    ok = stage("3 replay", [&] { return demo.replay(demonstration, report, error); });
+  if (ok)
+    ok = stage("4 generalize", [&] {
+      demo.generalize(demonstration, report);
+      return true;
+    });
+  report.physics_rtf = client.realTimeFactor();
+  report.wall_seconds = secondsSince(start);
+  spinner.stop();  // no callback may run into the client while it is destroyed
+  if (!ok)
+    std::cerr << "demo: " << error << "\n";
+  try
+  {
+    writeReport(report, options.out);
+  }
+  catch (const std::exception& e)
+  {
+    return std::cerr << "demo: " << e.what() << "\n", 1;
+  }
+  std::printf("demo: replay joint RMS %.2e rad, drill %.1f mm / %.2f deg; DMP %d of %d trials succeeded\n",
+              report.replay_joint_rms_rad, report.replay_object_position_error_m * 1000,
+              report.replay_object_angle_error_deg, report.successCount(), report.trialCount());
+  return ok ? 0 : 1;
+}

@@ -1,0 +1,136 @@
+#!/usr/bin/env python3
+"""./vrrw demo: the paper's evaluation end to end, headless, with its own master under Xvfb.
+
+  run_demo.py --launch WORKSPACE.launch --scene S [--trials N] [--seed S] [--out DIR] [--quick]
+
+Brings the workspace up in physics mode with rviz on a private display, runs demo_runner (teach,
+segment, replay, generalize; it saves rviz frames at the instruction boundaries), then draws the
+plots and frame strips beside the runner's metrics.json, report.md and index.html.
+"""
+import argparse
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.environ.get('VRRW_ROOT', os.path.abspath(os.path.join(HERE, '../../../..')))
+sys.path.insert(0, os.path.join(ROOT, 'catkin_ws', 'src', 'vrrw_viz', 'scripts'))
+import render_scene  # noqa: E402  (the render's Xvfb, port and rviz config helpers)
+import plot_demo  # noqa: E402
+
+WIDTH, HEIGHT = 640, 520
+# Closer than the shipped view: robot, drill, its final place and the bin fill the frame.
+VIEW = {'Distance': 1.75, 'Focal Point': {'X': -0.02, 'Y': 0.05, 'Z': 0.82}, 'Pitch': 0.62, 'Yaw': 0.45}
+
+
+def log(message):
+    print(f'demo: {message}', flush=True)
+
+
+def runner_path():
+    for directory in os.environ.get('CMAKE_PREFIX_PATH', '').split(':'):
+        path = os.path.join(directory, 'lib', 'vrrw_evaluation', 'demo_runner')
+        if os.access(path, os.X_OK):
+            return path
+    sys.exit('demo: demo_runner is not built: run ./vrrw build')
+
+
+def stop(processes):
+    for process in reversed(processes):
+        try:
+            os.killpg(process.pid, signal.SIGINT)
+            process.wait(timeout=15)
+        except (ProcessLookupError, subprocess.TimeoutExpired):
+            try:
+                os.killpg(process.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+
+
+def demo_config(path):
+    """The render's rviz config with the demo's view, drawn at 10 Hz (llvmpipe shares the 2 cores)."""
+    import yaml
+    render_scene.render_config(path, WIDTH, HEIGHT, set())
+    with open(path) as f:
+        config = yaml.safe_load(f)
+    manager = config['Visualization Manager']
+    manager['Views']['Current'].update(VIEW)
+    manager['Global Options']['Frame Rate'] = 10
+    with open(path, 'w') as f:
+        yaml.safe_dump(config, f)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument('--launch', required=True)
+    parser.add_argument('--scene', default='pick_place_drill')
+    parser.add_argument('--trials', type=int, default=20)
+    parser.add_argument('--seed', type=int, default=1)
+    parser.add_argument('--out', default='demo_report')
+    parser.add_argument('--quick', action='store_true', help='3 trials')
+    args = parser.parse_args()
+    trials = 3 if args.quick else args.trials
+    for tool in ('Xvfb', 'import', 'roslaunch'):
+        if not shutil.which(tool):
+            sys.exit(f'demo: {tool} is not installed; run ./vrrw setup')
+    runner = runner_path()
+    checked = subprocess.run([runner, '--scene', args.scene, '--check'], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True)
+    if checked.returncode != 0:
+        sys.exit(checked.stderr.strip() or f'demo: {args.scene}: not usable')
+    log(checked.stdout.strip().replace('demo: ', ''))
+    out = os.path.abspath(args.out)
+    if os.path.isdir(os.path.join(out, 'frames')):
+        shutil.rmtree(os.path.join(out, 'frames'))
+    os.makedirs(out, exist_ok=True)
+
+    start = time.monotonic()
+    workdir = tempfile.mkdtemp(prefix='vrrw_demo_')
+    config = os.path.join(workdir, 'demo.rviz')
+    # Simulated time for the whole workspace (as the physics tests run it): recorded stamps, segment
+    # boundaries and controller timing on one clock that advances with the physics steps.
+    launch = os.path.join(workdir, 'demo.launch')
+    with open(launch, 'w') as f:
+        f.write(f'<launch>\n  <param name="/use_sim_time" value="true"/>\n  <include file="{args.launch}"/>\n'
+                '  <param name="/physics/publish_clock" value="true"/>\n</launch>\n')
+    demo_config(config)
+    # VRRW_DISPLAY / VRRW_ROS_PORT pin the display and the master's port (parallel runs on one machine).
+    display = int(os.environ.get('VRRW_DISPLAY') or render_scene.free_display())
+    port = int(os.environ.get('VRRW_ROS_PORT') or render_scene.free_port())
+    env = dict(os.environ, DISPLAY=f':{display}', ROS_MASTER_URI=f'http://127.0.0.1:{port}')
+    os.environ.update(env)
+    processes = []
+    launch_log = os.path.join(out, 'workspace.log')
+    try:
+        processes.append(subprocess.Popen(['Xvfb', f':{display}', '-screen', '0', f'{WIDTH}x{HEIGHT}x24', '-nolisten',
+                                           'tcp'], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                          start_new_session=True))
+        log(f'[0/4] bringing up {args.scene} in physics mode on display :{display} (log: {launch_log})')
+        with open(launch_log, 'w') as f:
+            processes.append(subprocess.Popen(['roslaunch', launch], env=env, stdout=f, stderr=subprocess.STDOUT,
+                                              start_new_session=True))
+            processes.append(subprocess.Popen(['rviz', '-d', config], env=env, stdout=f, stderr=subprocess.STDOUT,
+                                              start_new_session=True))
+        try:
+            render_scene.wait_for_scene(60.0)
+        except RuntimeError as error:
+            sys.exit(f'demo: {error} (see {launch_log})')
+        log(f'workspace up after {time.monotonic() - start:.1f} s')
+        capture = f'import -display :{display} -window root {{file}}'
+        result = subprocess.run([runner, '--scene', args.scene, '--trials', str(trials), '--seed', str(args.seed),
+                                 '--out', out, '--shown', '1' if args.quick else '2', '--capture', capture], env=env)
+    finally:
+        stop(processes)
+        shutil.rmtree(workdir, ignore_errors=True)
+    log('drawing plots and frame strips')
+    plot_demo.draw(out)
+    log(f'report: {os.path.join(out, "index.html")} ({time.monotonic() - start:.0f} s in all)')
+    sys.exit(result.returncode)
+
+
+if __name__ == '__main__':
+    main()

@@ -1,0 +1,244 @@
+#include "pick_place_demo.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <vrrw_evaluation/trial_outcome.h>
+
+namespace vrrw_evaluation
+{
+namespace
+{
+void progress(const std::string& line)
+{
+  std::printf("demo: %s\n", line.c_str());
+  std::fflush(stdout);
+}
+
+/// Central differences of positions over time; at rest at both ends.
+void addVelocities(vrrw_trajectory::JointTrajectory& trajectory)
+{
+  auto& p = trajectory.points;
+  for (std::size_t k = 0; k < p.size(); ++k)
+  {
+    p[k].velocities.assign(p[k].positions.size(), 0.0);
+    if (k == 0 || k + 1 == p.size())
+      continue;
+    for (std::size_t j = 0; j < p[k].positions.size(); ++j)
+      p[k].velocities[j] = (p[k + 1].positions[j] - p[k - 1].positions[j]) / (p[k + 1].time - p[k - 1].time);
+  }
+}
+
+double distance(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double largest = 0.0;
+  for (std::size_t j = 0; j < a.size() && j < b.size(); ++j)
+    largest = std::max(largest, std::abs(a[j] - b[j]));
+  return largest;
+}
+}  // namespace
+
+PickPlaceDemo::PickPlaceDemo(WorkspaceClient& client, DemoOptions options)
+  : client_(client), options_(std::move(options))
+{
+  std::filesystem::create_directories(options_.out + "/data");
+  std::filesystem::create_directories(options_.out + "/frames");
+}
+
+bool PickPlaceDemo::moveLinear(const std::vector<std::pair<Eigen::Isometry3d, double>>& legs, std::string& error)
+{
+  constexpr double kSample = 0.04;
+  vrrw_trajectory::JointTrajectory trajectory;
+  trajectory.joint_names = client_.robot().arm_joints;
+  std::vector<double> q = client_.armJoints();
+  Eigen::Isometry3d from = client_.tcpPose();
+  trajectory.points.push_back({ 0.0, q, {}, {} });
+  double time = 0.0;
+  for (const auto& [to, seconds] : legs)
+  {
+    const int samples = std::max(2, int(std::lround(seconds / kSample)));
+    for (int k = 1; k <= samples; ++k)
+    {
+      const auto solution = client_.ik(interpolatePose(from, to, minimumJerk(double(k) / samples)), q, false, error);
+      if (!solution)
+        return error = "TCP line: " + error, false;
+      q = *solution;
+      trajectory.points.push_back({ time + seconds * k / samples, q, {}, {} });
+    }
+    time += seconds;
+    from = to;
+  }
+  addVelocities(trajectory);
+  return client_.execute(trajectory, error);
+}
+
+bool PickPlaceDemo::goHome(std::string& error)
+{
+  if (home_.empty() || distance(client_.armJoints(), home_) < 1e-3)
+    return true;
+  Eigen::Isometry3d up = client_.tcpPose();
+  up.translation().z() += 0.10;
+  if (!moveLinear({ { up, 0.8 } }, error))
+    return false;
+  std::string why;
+  auto planned = client_.plan(home_, why);
+  if (!planned)
+  {
+    // A direct joint move is safe from up there; say that the planner failed.
+    progress("plan home failed (" + why + "); moving home in joint space");
+    vrrw_trajectory::JointTrajectory direct;
+    direct.joint_names = client_.robot().arm_joints;
+    const std::vector<double> q = client_.armJoints();
+    for (int k = 0; k <= 20; ++k)
+    {
+      std::vector<double> p(q.size());
+      for (std::size_t j = 0; j < q.size(); ++j)
+        p[j] = q[j] + minimumJerk(k / 20.0) * (home_[j] - q[j]);
+      direct.points.push_back({ 2.0 * k / 20.0, p, {}, {} });
+    }
+    addVelocities(direct);
+    planned = direct;
+  }
+  return client_.execute(*planned, error);
+}
+
+bool PickPlaceDemo::resetObject(const Eigen::Isometry3d& pose, std::string& error)
+{
+  if (!goHome(error) || !client_.placeObject(pose, error))
+    return false;
+  ros::WallDuration(0.3).sleep();  // the drill settles on the table
+  return true;
+}
+
+void PickPlaceDemo::capture(const std::string& row, std::size_t boundary, bool frames)
+{
+  if (!frames || options_.capture_command.empty())
+    return;
+  ros::WallDuration(0.15).sleep();  // rviz draws the last tf
+  std::string command = options_.capture_command;
+  const std::string file = options_.out + "/frames/" + row + "_" + std::to_string(boundary) + ".png";
+  const auto at = command.find("{file}");
+  if (at != std::string::npos)
+    command.replace(at, 6, "'" + file + "'");
+  if (std::system(command.c_str()) != 0)
+    progress("frame capture failed: " + command);
+}
+
+bool PickPlaceDemo::perform(const std::string& row, bool frames, const std::vector<Instruction>& instructions,
+                            Recording& recording, std::vector<Segment>& segments, std::string& error)
+{
+  client_.startRecording(row == "demonstration" ? options_.out + "/demonstration.bag" : "");
+  bool ok = true;
+  for (std::size_t i = 0; i < instructions.size() && ok; ++i)
+  {
+    Segment segment{ kInstructions[i], client_.recordingTime(), 0.0 };
+    client_.annotate("instruction_start", kInstructions[i]);
+    ok = instructions[i](error);
+    segment.end = client_.recordingTime();
+    client_.annotate(ok ? "instruction_end" : "instruction_failed", kInstructions[i]);
+    segments.push_back(segment);
+    if (!ok)
+      error = kInstructions[i] + ": " + error;
+    else
+      capture(row, i + 1, frames);
+  }
+  ros::WallDuration(0.5).sleep();  // the released drill comes to rest, still recorded
+  recording = client_.stopRecording();
+  writeRecording(row, recording, segments);
+  return ok;
+}
+
+bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& error)
+{
+  home_ = client_.armJoints();
+  object_start_ = client_.objectPose();
+  const GraspGeometry& grasp = options_.grasp;
+  Eigen::Isometry3d object_final = object_start_;
+  object_final.translation() += Eigen::Vector3d(options_.final_offset.x(), options_.final_offset.y(),
+                                                grasp.release_height);
+  const Eigen::Isometry3d near_pick = tcpAtNearPick(object_start_, grasp);
+  const Eigen::Isometry3d pick = tcpAtGrasp(object_start_, grasp);
+  const Eigen::Isometry3d place = tcpAtGrasp(object_final, grasp);
+  Eigen::Isometry3d above_place = place;
+  above_place.translation().z() = near_pick.translation().z();
+  double plan_ms = 0.0;
+  const std::vector<Instruction> script = {
+    [&](std::string& e) {
+      const auto q = client_.ik(near_pick, home_, true, e);
+      auto planned = q ? client_.plan(*q, e, &plan_ms) : std::nullopt;
+      return planned && client_.execute(*planned, e);
+    },
+    [&](std::string& e) { return moveLinear({ { pick, 1.2 } }, e); },
+    [&](std::string& e) { return client_.grip(grasp.finger_closed, grasp.grip_force, e); },
+    [&](std::string& e) { return moveLinear({ { near_pick, 1.0 } }, e); },
+    [&](std::string& e) {
+      const bool placed = moveLinear({ { above_place, 1.8 }, { place, 1.0 } }, e);
+      object_released_ = client_.objectPose();
+      return placed;
+    },
+    [&](std::string& e) { return client_.grip(grasp.finger_open, 0.0, e); },
+  };
+  Recording recording;
+  demo = Demonstration();
+  if (!perform("demonstration", true, script, recording, demo.segments, error))
+    return false;
+  object_end_ = client_.objectPose();
+  demo.arm = recording.arm;
+  demo.finger_closed = grasp.finger_closed;
+  demo.finger_open = grasp.finger_open;
+  demo.grip_force = grasp.grip_force;
+  report.teach_source = "scripted: planned near-pick, TCP lines by IK, GripperCommand (recorded from joint_states)";
+  report.teach_seconds = recording.seconds;
+  report.segments = demo.segments;
+  report.plan_ms = plan_ms;
+  report.message_counts["/" + client_.robot().name + "/joint_states"] = recording.joint_state_messages;
+  report.message_counts["/physics/contacts"] = recording.contact_messages;
+  report.message_counts["/demos/events"] = recording.event_messages;
+  report.bag_messages = recording.joint_state_messages + recording.contact_messages + recording.event_messages;
+  report.bag_file = recording.bag_file;
+  if (!recording.arm_contacts.empty())
+    progress("warning: the demonstration touched " + *recording.arm_contacts.begin());
+  return true;
+}
+
+bool PickPlaceDemo::replay(const Demonstration& demo, DemoReport& report, std::string& error)
+{
+  if (!resetObject(object_start_, error))
+    return false;
+  std::vector<Instruction> instructions;
+  for (const Segment& segment : demo.segments)
+    instructions.push_back([&, segment](std::string& e) {
+      if (segment.name == "close_gripper")
+        return client_.grip(demo.finger_closed, demo.grip_force, e);
+      if (segment.name == "open_gripper")
+        return client_.grip(demo.finger_open, 0.0, e);
+      vrrw_trajectory::JointTrajectory motion = slice(demo.arm, segment.start, segment.end);
+      addVelocities(motion);  // as recorded, from the measured positions; at rest at the ends
+      return client_.execute(motion, e);
+    });
+  Recording recording;
+  std::vector<Segment> segments;
+  if (!perform("replay", true, instructions, recording, segments, error))
+    return false;
+  const Eigen::Isometry3d end = client_.objectPose();
+  report.replay_object_position_error_m = (end.translation() - object_end_.translation()).norm();
+  report.replay_object_angle_error_deg =
+      Eigen::AngleAxisd(end.rotation() * object_end_.rotation().transpose()).angle() * 180.0 / M_PI;
+  double sum = 0.0, duration = 0.0;
+  for (std::size_t i = 0; i < segments.size(); ++i)
+  {
+    if (isGripperInstruction(segments[i].name))
+      continue;
+    const auto reference = slice(demo.arm, demo.segments[i].start, demo.segments[i].end);
+    const double rms = jointRms(reference, slice(recording.arm, segments[i].start, segments[i].end));
+    report.replay_segment_rms_rad[segments[i].name] = rms;
+    sum += rms * rms * reference.duration();
+    duration += reference.duration();
+  }
+  report.replay_joint_rms_rad = std::sqrt(sum / std::max(duration, 1e-9));
+  return true;
+}
+}  // namespace vrrw_evaluation

@@ -1,0 +1,63 @@
+#pragma once
+// The stages of ./vrrw demo on a running physics workspace: teach, replay, generalize.
+#include <Eigen/Geometry>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <vrrw_evaluation/demo_report.h>
+#include <vrrw_evaluation/demonstration.h>
+#include <vrrw_evaluation/drill_poses.h>
+#include <vrrw_evaluation/instruction_dmps.h>
+#include <vrrw_evaluation/pick_place_task.h>
+
+#include "workspace_client.h"
+
+namespace vrrw_evaluation
+{
+struct DemoOptions
+{
+  int trials = 20;
+  std::uint64_t seed = 1;
+  std::string out = "demo_report";
+  int shown_trials = 2;             ///< DMP trials with a row of frames
+  std::string capture_command;      ///< shell command with {file}: saves one rviz frame; empty: none
+  GraspGeometry grasp;
+  TrialSpread spread;
+  Eigen::Vector2d final_offset{ -0.10, -0.25 };  ///< where the demonstration puts the drill, from its start
+};
+
+class PickPlaceDemo
+{
+public:
+  PickPlaceDemo(WorkspaceClient& client, DemoOptions options);
+
+  /// \brief The scripted demonstration: near-pick (planned), pick, close, back, carry and lower, open.
+  bool teach(Demonstration& demo, DemoReport& report, std::string& error);
+  /// \brief Direct imitation of every instruction from the reset scene; errors into `report`.
+  bool replay(const Demonstration& demo, DemoReport& report, std::string& error);
+  /// \brief DMPs per instruction, then `options.trials` new drill poses; one TrialRecord each.
+  void generalize(const Demonstration& demo, DemoReport& report);
+
+private:
+  using Instruction = std::function<bool(std::string&)>;
+  /// Runs the six instructions in order, recording; boundaries into `segments`, frames for `row`.
+  bool perform(const std::string& row, bool frames, const std::vector<Instruction>& instructions,
+               Recording& recording, std::vector<Segment>& segments, std::string& error);
+  /// A straight TCP line through every pose of `legs` (each with its duration, minimum jerk), by IK.
+  bool moveLinear(const std::vector<std::pair<Eigen::Isometry3d, double>>& legs, std::string& error);
+  bool goHome(std::string& error);
+  /// The final arm goal that releases the drill, as it is held now, where the demonstration released it.
+  std::vector<double> placeGoal(const std::vector<double>& demonstrated, double& ik_ms);
+  bool resetObject(const Eigen::Isometry3d& pose, std::string& error);
+  void capture(const std::string& row, std::size_t boundary, bool frames);
+  void writeRecording(const std::string& row, const Recording& recording, const std::vector<Segment>& segments);
+
+  WorkspaceClient& client_;
+  DemoOptions options_;
+  std::vector<double> home_;
+  Eigen::Isometry3d object_start_ = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d object_end_ = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d object_released_ = Eigen::Isometry3d::Identity();  ///< in the hand, before opening
+};
+}  // namespace vrrw_evaluation

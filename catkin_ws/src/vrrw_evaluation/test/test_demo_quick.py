@@ -1,0 +1,82 @@
+"""./vrrw demo --quick as a user runs it: within 2 minutes, with the issue's numbers in metrics.json;
+and the bad inputs (unknown scene, a scene without a graspable object) as one clear line."""
+import json
+import os
+import subprocess
+import tempfile
+import time
+import unittest
+
+ROOT = os.environ.get('VRRW_ROOT', os.path.abspath(os.path.join(os.path.dirname(__file__), '../../../..')))
+VRRW = os.path.join(ROOT, 'vrrw')
+
+
+def demo(*args, timeout=300):
+    return subprocess.run([VRRW, 'demo', *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                          timeout=timeout)
+
+
+class QuickDemoTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.out = tempfile.mkdtemp(prefix='vrrw_demo_test_')
+        start = time.monotonic()
+        cls.result = demo('--quick', '--seed', '3', '--out', cls.out)
+        cls.seconds = time.monotonic() - start
+        print(cls.result.stdout[-4000:])
+        with open(os.path.join(cls.out, 'metrics.json')) as f:
+            cls.metrics = json.load(f)
+
+    def test_runs_within_two_minutes(self):
+        self.assertEqual(self.result.returncode, 0, self.result.stderr[-2000:])
+        self.assertLess(self.seconds, 120.0)
+        self.assertLess(self.metrics['wall_seconds'], 120.0)
+
+    def test_teach_and_segments(self):
+        self.assertGreater(self.metrics['teach']['seconds'], 3.0)
+        self.assertGreater(self.metrics['bag']['messages'], 300)
+        names = [s['name'] for s in self.metrics['segments']]
+        self.assertEqual(names, ['move_to_near_pick', 'move_to_pick', 'close_gripper', 'back_to_near_pick',
+                                 'move_to_final', 'open_gripper'])
+        for before, after in zip(self.metrics['segments'], self.metrics['segments'][1:]):
+            self.assertLess(before['start'], before['end'])
+            self.assertLessEqual(before['end'], after['start'] + 1e-6)
+
+    def test_replay_reproduces_the_demonstration(self):
+        replay = self.metrics['replay']
+        self.assertLess(replay['joint_rms_rad'], 5e-3)
+        self.assertLess(replay['object_position_error_m'], 0.01)
+        self.assertLess(replay['object_angle_error_deg'], 5.0)
+
+    def test_dmp_trials(self):
+        dmp = self.metrics['dmp']
+        self.assertEqual(dmp['trials'], 3)
+        self.assertGreaterEqual(dmp['success_rate'], 2.0 / 3.0 - 1e-9, dmp['failures'])
+        self.assertEqual(len(dmp['failures']), round(3 * (1 - dmp['success_rate'])))
+        for trial in dmp['trial_results']:
+            if trial['success']:
+                self.assertLess(trial['final_error_m'], 0.03)
+
+    def test_physics_kept_real_time_and_the_report_is_whole(self):
+        self.assertGreater(self.metrics['physics']['rtf'], 0.8)
+        for name in ('index.html', 'report.md', 'joints.png', 'top_view.png', 'strips.png'):
+            self.assertGreater(os.path.getsize(os.path.join(self.out, name)), 1000, name)
+        self.assertEqual(len([f for f in os.listdir(os.path.join(self.out, 'frames')) if f.endswith('.png')]), 18)
+
+
+class BadSceneTest(unittest.TestCase):
+    def test_unknown_scene(self):
+        result = demo('--scene', 'no_such_cell', '--quick', timeout=60)
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn('no_such_cell', result.stderr)
+
+    def test_scene_without_a_graspable_object(self):
+        scene = os.path.join(tempfile.mkdtemp(prefix='vrrw_demo_bad_'), 'no_drill.yaml')
+        with open(scene, 'w') as f:
+            f.write('robots:\n  - {name: ur5e, model: ur5e, gripper: robotiq_2f_85, base: {xyz: [-0.35, 0, 0.75]}}\n'
+                    'objects:\n  - {name: table, kind: table}\n')
+        result = demo('--scene', scene, '--quick', timeout=60)
+        self.assertNotEqual(result.returncode, 0)
+        lines = [line for line in result.stderr.splitlines() if line.strip()]
+        self.assertIn('no graspable object', lines[-1])
+        self.assertIn('table (table, fixed)', lines[-1])
