@@ -61,7 +61,7 @@ std::vector<std::pair<std::string, std::string>> metricRows(const DemoReport& r)
   std::string counts;
   for (const auto& [topic, count] : r.message_counts)
     counts += (counts.empty() ? "" : ", ") + topic + " " + std::to_string(count);
-  rows.push_back({ "recorded messages", std::to_string(r.bag_messages) + (counts.empty() ? "" : " (" + counts + ")") });
+  rows.push_back({ "demonstration bag messages", std::to_string(r.bag_messages) + (counts.empty() ? "" : " (" + counts + ")") });
   for (const Segment& s : r.segments)
     rows.push_back({ "segment " + s.name, number(s.start, 4) + " .. " + number(s.end, 4) + " s" });
   rows.push_back({ "replay joint error (RMS)", number(r.replay_joint_rms_rad, 3) + " rad" });
@@ -116,7 +116,7 @@ std::string metricsJson(const DemoReport& r)
   j << "{\n  \"scene\": " << quoted(r.scene) << ",\n  \"seed\": " << r.seed << ",\n";
   j << "  \"teach\": {\"seconds\": " << number(r.teach_seconds) << ", \"source\": " << quoted(r.teach_source)
     << ", \"plan_ms\": " << number(r.plan_ms) << "},\n";
-  j << "  \"bag\": {\"messages\": " << r.bag_messages << ", \"topics\": {";
+  j << "  \"bag\": {\"messages\": " << r.bag_messages << ", \"file\": " << quoted(r.bag_file) << ", \"topics\": {";
   std::string sep;
   for (const auto& [topic, count] : r.message_counts)
     j << sep << quoted(topic) << ": " << count, sep = ", ";

@@ -39,8 +39,23 @@ vrrw_trajectory::JointTrajectory InstructionDmps::rollout(const std::string& ins
   request.start = start;
   request.goal = goal;
   request.dt = dt;
-  request.goal_tolerance = 1e-3;
-  request.rest_tolerance = 1e-2;
-  return dmp(instruction).rollout(request);
+  vrrw_trajectory::JointTrajectory motion = dmp(instruction).rollout(request);
+  // The spring's tail creeps over the last millirad for up to 3 tau: end at the goal, at rest, once within
+  // kSettledWithin of it after tau (the controller's last segment covers the rest).
+  const double tau = dmp(instruction).demoDuration();
+  for (std::size_t k = 0; k < motion.points.size(); ++k)
+  {
+    double off = 0.0;
+    for (std::size_t j = 0; j < goal.size(); ++j)
+      off = std::max(off, std::abs(motion.points[k].positions[j] - goal[j]));
+    if (motion.points[k].time >= tau && off < kSettledWithin)
+    {
+      const double end = motion.points[k].time + 0.2;
+      motion.points.resize(k + 1);
+      motion.points.push_back({ end, goal, std::vector<double>(goal.size(), 0.0), std::vector<double>(goal.size(), 0.0) });
+      break;
+    }
+  }
+  return motion;
 }
 }  // namespace vrrw_evaluation

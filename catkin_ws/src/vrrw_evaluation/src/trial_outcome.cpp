@@ -1,6 +1,7 @@
 #include <vrrw_evaluation/drill_poses.h>
 #include <vrrw_evaluation/trial_outcome.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -31,6 +32,9 @@ TrialOutcome judgeTrial(const TrialObservation& seen, const Eigen::Isometry3d& d
     why << "not lifted: rose " << seen.max_lift * 100 << " cm (< " << criteria.min_lift * 100 << " cm)";
   else if (!seen.gripper_open_at_end)
     why << "not released";
+  else if (std::acos(std::min(1.0, seen.object_end.rotation()(2, 2))) * 180.0 / M_PI > criteria.max_tilt_deg)
+    why << "toppled: tilted " << std::acos(std::min(1.0, seen.object_end.rotation()(2, 2))) * 180.0 / M_PI
+        << " deg at the end";
   else if (outcome.final_error_m > criteria.final_radius)
     why << "released " << outcome.final_error_m * 100 << " cm from the demonstrated final position (> "
         << criteria.final_radius * 100 << " cm)";

@@ -46,6 +46,10 @@ TEST(TrialOutcome, SuccessNeedsLiftReleaseAndTheFinalAreaWithinThreeCentimetres)
   held.gripper_open_at_end = false;
   EXPECT_EQ(judgeTrial(held, demo_end).reason, "not released");
 
+  TrialObservation toppled = carried();
+  toppled.object_end.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  EXPECT_EQ(judgeTrial(toppled, demo_end).reason, "toppled: tilted 90 deg at the end");
+
   TrialObservation hit = carried();
   hit.arm_contacts.insert("table|ur5e_wrist_3_link");
   EXPECT_EQ(judgeTrial(hit, demo_end).reason, "arm collision: table|ur5e_wrist_3_link");

@@ -28,6 +28,7 @@ struct DemoReport
   std::uint64_t seed = 0;
   double teach_seconds = 0.0;
   std::uint64_t bag_messages = 0;
+  std::string bag_file;  ///< the demonstration's bag
   std::map<std::string, std::uint64_t> message_counts;  ///< per topic
   std::vector<Segment> segments;
   double replay_joint_rms_rad = 0.0;

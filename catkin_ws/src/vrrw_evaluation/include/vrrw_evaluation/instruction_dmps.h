@@ -23,7 +23,11 @@ public:
   /// demonstration, rad.
   double fitRmse(const std::string& instruction) const { return fit_rmse_.at(instruction); }
 
-  /// \brief The instruction's motion from `start` to `goal` at the demonstrated speed, sampled every dt.
+  /// rad: a rollout past tau this close to its goal ends there (at rest 0.2 s later).
+  static constexpr double kSettledWithin = 3e-3;
+
+  /// \brief The instruction's motion from `start` to `goal` at the demonstrated speed, sampled every dt;
+  /// ends exactly at `goal`, at rest.
   vrrw_trajectory::JointTrajectory rollout(const std::string& instruction, const std::vector<double>& start,
                                            const std::vector<double>& goal, double dt = 0.01) const;
 

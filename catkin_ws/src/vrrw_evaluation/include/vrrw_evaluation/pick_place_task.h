@@ -19,8 +19,10 @@ struct GraspGeometry
   double approach = 0.12;        ///< m above the grasp point: near-pick
   double finger_open = 0.0;      ///< finger_joint, rad
   double finger_closed = 0.8;    ///< rad: past the 64 mm housing, so the grip stalls on it
-  double grip_force = 50.0;      ///< N per pad (GripperCommand max_effort); the drill weighs 14.7 N
-  double release_height = 0.004; ///< m the drill's base is above the table when the gripper opens
+  double grip_force = 70.0;      ///< N per pad (GripperCommand max_effort); the drill weighs 14.7 N
+  /// m the drill's base is above the table when the gripper opens; below 0: pressed onto it, so a drill
+  /// swinging about the pads' axis (a two-finger grip cannot hold that rotation) stands flat before release
+  double release_height = -0.002;
 };
 
 /// \brief TCP pose (world) that holds the drill standing at `drill` (world pose of its frame).

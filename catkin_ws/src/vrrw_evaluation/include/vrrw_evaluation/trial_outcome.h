@@ -22,6 +22,7 @@ struct SuccessCriteria
 {
   double min_lift = 0.05;      ///< m
   double final_radius = 0.03;  ///< m, in the table plane
+  double max_tilt_deg = 20.0;  ///< the object's z axis from the vertical at the end: more is toppled
 };
 
 struct TrialOutcome

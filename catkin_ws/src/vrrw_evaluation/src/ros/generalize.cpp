@@ -10,6 +10,14 @@ namespace vrrw_evaluation
 {
 namespace
 {
+double distance(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double largest = 0.0;
+  for (std::size_t j = 0; j < a.size() && j < b.size(); ++j)
+    largest = std::max(largest, std::abs(a[j] - b[j]));
+  return largest;
+}
+
 /// The arm goal of each arm instruction for a drill standing at `object`, through IK seeded with the
 /// demonstrated goal (same branch); near-pick must be collision-free, pick puts the fingers around it.
 bool transferGoals(WorkspaceClient& client, const Demonstration& demo, const Eigen::Isometry3d& object,
@@ -30,6 +38,18 @@ bool transferGoals(WorkspaceClient& client, const Demonstration& demo, const Eig
   return true;
 }
 }  // namespace
+
+std::vector<double> PickPlaceDemo::placeGoal(const std::vector<double>& demonstrated, double& ik_ms)
+{
+  // The drill sits in this grasp a little differently than in the demonstration's: the goal that puts
+  // it where the demonstration released it, through IK from how it is held now.
+  const Eigen::Isometry3d held = client_.tcpPose().inverse() * client_.objectPose();
+  std::string error;
+  const auto goal = client_.ik(object_released_ * held.inverse(), demonstrated, false, error, &ik_ms);
+  if (!goal || distance(*goal, demonstrated) > 0.3)
+    return demonstrated;
+  return *goal;
+}
 
 void PickPlaceDemo::generalize(const Demonstration& demo, DemoReport& report)
 {
@@ -67,6 +87,8 @@ void PickPlaceDemo::generalize(const Demonstration& demo, DemoReport& report)
             return client_.grip(demo.finger_closed, demo.grip_force, e);
           if (name == "open_gripper")
             return seen.gripper_open_at_end = client_.grip(demo.finger_open, 0.0, e);
+          if (name == "move_to_final")
+            goals[name] = placeGoal(goals[name], trial.ik_ms);
           return client_.execute(dmps.rollout(name, client_.armJoints(), goals.at(name)), e);
         });
       Recording recording;

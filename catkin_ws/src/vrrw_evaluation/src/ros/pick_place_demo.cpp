@@ -130,13 +130,15 @@ void PickPlaceDemo::capture(const std::string& row, std::size_t boundary, bool f
 bool PickPlaceDemo::perform(const std::string& row, bool frames, const std::vector<Instruction>& instructions,
                             Recording& recording, std::vector<Segment>& segments, std::string& error)
 {
-  client_.startRecording();
+  client_.startRecording(row == "demonstration" ? options_.out + "/demonstration.bag" : "");
   bool ok = true;
   for (std::size_t i = 0; i < instructions.size() && ok; ++i)
   {
     Segment segment{ kInstructions[i], client_.recordingTime(), 0.0 };
+    client_.annotate("instruction_start", kInstructions[i]);
     ok = instructions[i](error);
     segment.end = client_.recordingTime();
+    client_.annotate(ok ? "instruction_end" : "instruction_failed", kInstructions[i]);
     segments.push_back(segment);
     if (!ok)
       error = kInstructions[i] + ": " + error;
@@ -172,7 +174,11 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
     [&](std::string& e) { return moveLinear({ { pick, 1.2 } }, e); },
     [&](std::string& e) { return client_.grip(grasp.finger_closed, grasp.grip_force, e); },
     [&](std::string& e) { return moveLinear({ { near_pick, 1.0 } }, e); },
-    [&](std::string& e) { return moveLinear({ { above_place, 1.8 }, { place, 1.0 } }, e); },
+    [&](std::string& e) {
+      const bool placed = moveLinear({ { above_place, 1.8 }, { place, 1.0 } }, e);
+      object_released_ = client_.objectPose();
+      return placed;
+    },
     [&](std::string& e) { return client_.grip(grasp.finger_open, 0.0, e); },
   };
   Recording recording;
@@ -190,7 +196,9 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   report.plan_ms = plan_ms;
   report.message_counts["/" + client_.robot().name + "/joint_states"] = recording.joint_state_messages;
   report.message_counts["/physics/contacts"] = recording.contact_messages;
-  report.bag_messages = recording.joint_state_messages + recording.contact_messages;
+  report.message_counts["/demos/events"] = recording.event_messages;
+  report.bag_messages = recording.joint_state_messages + recording.contact_messages + recording.event_messages;
+  report.bag_file = recording.bag_file;
   if (!recording.arm_contacts.empty())
     progress("warning: the demonstration touched " + *recording.arm_contacts.begin());
   return true;

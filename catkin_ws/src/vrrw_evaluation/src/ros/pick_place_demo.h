@@ -47,6 +47,8 @@ private:
   /// A straight TCP line through every pose of `legs` (each with its duration, minimum jerk), by IK.
   bool moveLinear(const std::vector<std::pair<Eigen::Isometry3d, double>>& legs, std::string& error);
   bool goHome(std::string& error);
+  /// The final arm goal that releases the drill, as it is held now, where the demonstration released it.
+  std::vector<double> placeGoal(const std::vector<double>& demonstrated, double& ik_ms);
   bool resetObject(const Eigen::Isometry3d& pose, std::string& error);
   void capture(const std::string& row, std::size_t boundary, bool frames);
   void writeRecording(const std::string& row, const Recording& recording, const std::vector<Segment>& segments);
@@ -56,5 +58,6 @@ private:
   std::vector<double> home_;
   Eigen::Isometry3d object_start_ = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d object_end_ = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d object_released_ = Eigen::Isometry3d::Identity();  ///< in the hand, before opening
 };
 }  // namespace vrrw_evaluation

@@ -2,6 +2,7 @@
 
 #include <tf2_eigen/tf2_eigen.h>
 #include <vrrw_msgs/ComputeIK.h>
+#include <vrrw_msgs/Event.h>
 #include <vrrw_msgs/Plan.h>
 #include <vrrw_physics/SetObjectPose.h>
 #include <vrrw_evaluation/trial_outcome.h>
@@ -195,10 +196,16 @@ bool WorkspaceClient::placeObject(const Eigen::Isometry3d& pose, std::string& er
   return error = "tf never showed " + object_ + " where set_object_pose put it", false;
 }
 
-void WorkspaceClient::startRecording()
+void WorkspaceClient::startRecording(const std::string& bag_file)
 {
   std::lock_guard<std::mutex> lock(mutex_);
   recording_data_ = Recording();
+  if (!bag_file.empty())
+  {
+    bag_.open(bag_file, rosbag::bagmode::Write);
+    bag_open_ = true;
+    recording_data_.bag_file = bag_file;
+  }
   recording_data_.arm.joint_names = robot_.arm_joints;
   record_start_ = ros::Time::now();
   recording_ = true;
@@ -209,7 +216,25 @@ Recording WorkspaceClient::stopRecording()
   std::lock_guard<std::mutex> lock(mutex_);
   recording_ = false;
   recording_data_.seconds = (ros::Time::now() - record_start_).toSec();
+  if (bag_open_)
+    bag_.close();
+  bag_open_ = false;
   return std::move(recording_data_);
+}
+
+void WorkspaceClient::annotate(const std::string& kind, const std::string& detail)
+{
+  vrrw_msgs::Event event;
+  event.header.stamp = ros::Time::now();
+  event.source = "demo_script";
+  event.robot = robot_.name;
+  event.kind = kind;
+  event.detail = detail;
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!recording_ || !bag_open_)
+    return;
+  ++recording_data_.event_messages;
+  bag_.write("/demos/events", event.header.stamp, event);
 }
 
 double WorkspaceClient::recordingTime() const
@@ -239,6 +264,8 @@ void WorkspaceClient::onJointStates(const sensor_msgs::JointState::ConstPtr& msg
   if (!recording_)
     return;
   ++recording_data_.joint_state_messages;
+  if (bag_open_)
+    bag_.write("/" + robot_.name + "/joint_states", msg->header.stamp, *msg);
   recording_data_.arm.points.push_back({ (msg->header.stamp - record_start_).toSec(), q, qd, {} });
 }
 
@@ -248,6 +275,8 @@ void WorkspaceClient::onContacts(const vrrw_physics::Contacts::ConstPtr& msg)
   if (!recording_)
     return;
   ++recording_data_.contact_messages;
+  if (bag_open_)
+    bag_.write("/physics/contacts", msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp, *msg);
   for (const auto& c : msg->contacts)
     if (isArmCollision(c.body_a, c.body_b, robot_.name, obstacles_))
       recording_data_.arm_contacts.insert(c.body_a + "|" + c.body_b);

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <optional>
 #include <ros/ros.h>
+#include <rosbag/bag.h>
 #include <sensor_msgs/JointState.h>
 #include <set>
 #include <tf2_ros/transform_listener.h>
@@ -33,6 +34,8 @@ struct Recording
   std::set<std::string> arm_contacts;    ///< arm collisions with the obstacles seen
   std::uint64_t joint_state_messages = 0;
   std::uint64_t contact_messages = 0;
+  std::uint64_t event_messages = 0;
+  std::string bag_file;  ///< the bag written beside, empty: none
   double seconds = 0.0;  ///< wall
 };
 
@@ -62,8 +65,11 @@ public:
   /// \brief /physics/set_object_pose, then waits until tf shows the object there.
   bool placeObject(const Eigen::Isometry3d& pose, std::string& error);
 
-  void startRecording();
+  /// \brief Starts recording; with `bag_file` also into that bag (joint_states, contacts, events).
+  void startRecording(const std::string& bag_file = "");
   Recording stopRecording();
+  /// \brief An event (vrrw_msgs/Event on /demos/events in the bag): `kind` one word, `detail` one line.
+  void annotate(const std::string& kind, const std::string& detail);
   /// \brief Seconds since startRecording().
   double recordingTime() const;
   /// \brief Simulated (ROS) seconds per wall second since waitUntilReady() succeeded.
@@ -94,6 +100,8 @@ private:
   bool recording_ = false;
   ros::Time record_start_;  ///< physics stamps joint_states with the same clock
   Recording recording_data_;
+  rosbag::Bag bag_;
+  bool bag_open_ = false;
   ros::Time ready_sim_;
   ros::WallTime ready_wall_;
 };
