@@ -23,4 +23,9 @@ if [ ! -x "$venv/bin/xacro" ]; then
   /usr/bin/python3 -m venv --system-site-packages "$venv"
   "$venv/bin/pip" install -q --disable-pip-version-check xacro==1.13.3
 fi
+# rosbags: an independent bag reader, used only by vrrw_demos' recorder test.
+if ! "$venv/bin/python" -c "import rosbags" 2>/dev/null; then
+  echo "setup: installing rosbags into $venv (vrrw_demos' test reads bags with it)" >&2
+  "$venv/bin/pip" install -q --disable-pip-version-check "rosbags==0.11.9"
+fi
 echo "setup: ready" >&2

@@ -32,6 +32,18 @@ int freePort()
   return ntohs(address.sin_port);
 }
 
+bool masterUp(int port)
+{
+  const int s = socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  address.sin_port = htons(static_cast<uint16_t>(port));
+  const bool up = connect(s, reinterpret_cast<sockaddr*>(&address), sizeof(address)) == 0;
+  close(s);
+  return up;
+}
+
 double percentile(std::vector<double> v, double p)
 {
   if (v.empty())
@@ -82,7 +94,8 @@ std::vector<double> markerLatency(ros::NodeHandle& nh, tf2_ros::Buffer& tf, int 
     }
     pub.publish(f);
     tick += ros::WallDuration(0.01);
-    (tick - ros::WallTime::now()).sleep();
+    if (const ros::WallDuration rest = tick - ros::WallTime::now(); rest > ros::WallDuration(0))
+      rest.sleep();  // a negative WallDuration would sleep for ever
   }
   ros::WallDuration(0.5).sleep();
   std::lock_guard<std::mutex> lock(mutex);
@@ -121,8 +134,10 @@ int main(int argc, char** argv)
   std::cerr << "bench interaction: physics cell of pick_place_drill on " << master << " (log " << log << ")\n";
   int status = 0;
   {
+    // the master first: a roscpp node that cannot reach it at start may hang in its retry loop
+    for (int i = 0; i < 600 && !masterUp(port); ++i)
+      usleep(100000);
     ros::init(argc, argv, "bench_interaction", ros::init_options::NoSigintHandler);
-    ros::WallDuration(2.0).sleep();  // the master comes up first
     ros::NodeHandle nh;
     ros::AsyncSpinner spinner(2);
     spinner.start();

@@ -91,7 +91,8 @@ inline DragFigures dragWrist(ros::NodeHandle& nh, tf2_ros::Buffer& tf, double di
     hand.translation() = start + Eigen::Vector3d(0, distance * std::min(1.0, double(i) / steps), 0);
     send();
     tick += ros::WallDuration(0.01);
-    (tick - ros::WallTime::now()).sleep();
+    if (const ros::WallDuration rest = tick - ros::WallTime::now(); rest > ros::WallDuration(0))
+      rest.sleep();  // a negative WallDuration would sleep for ever
     if (i > steps)
       continue;
     const double error = (linkPose(out.body) * point - (grabbed_world + (hand.translation() - start))).norm();

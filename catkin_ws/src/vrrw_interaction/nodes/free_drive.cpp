@@ -67,6 +67,7 @@ FreeDrive::FreeDrive(WorldView& view, std::vector<GhostInterface*> arms, double 
     control.markers.push_back(box);
     marker.controls.push_back(control);
     mouse_->insert(marker, [this](const auto& f) { onMouse(f); });
+    mouse_at_[robot] = Eigen::Translation3d(Eigen::Vector3d::Constant(1e9)) * Eigen::Isometry3d::Identity();  // tick() places it
   }
   mouse_->applyChanges();
 }
@@ -140,7 +141,9 @@ void FreeDrive::onPose(Tracker& tracker, const geometry_msgs::PoseStamped& msg)
   // the open hand pushes, once clear of what it let go (a sphere appearing inside a link would kick it)
   if (!tracker.pushes)
     tracker.pushes = !nearestBody(view_.world(), view_.liveState(), tracker.hand.pose().translation(),
-                                  hand_radius_ + 0.01, [](const auto&) { return true; });
+                                  hand_radius_ + 0.01, [this](const vrrw_kinematics::CollisionBody& body) {
+                                    return !body.object || !view_.scene().object(body.name)->fixed;
+                                  });
   publishHand(tracker, tracker.pushes ? hand_radius_ : 0.0);
 }
 
@@ -238,34 +241,54 @@ void FreeDrive::publishHand(const Tracker& tracker, double radius)
 
 void FreeDrive::tick()
 {
-  std::lock_guard<std::mutex> lock(view_.mutex());
-  visualization_msgs::MarkerArray markers;
-  const double now = ros::WallTime::now().toSec();
-  for (auto& [id, tracker] : trackers_)
+  std::map<std::string, Eigen::Isometry3d> tcps;
   {
-    if (tracker->hand.held() && tracker->hand.stale(now))
-      release(*tracker, "stale: no pose for 0.5 s");
-    if (!tracker->hand.hasPose())
-      continue;
-    visualization_msgs::Marker sphere;
-    sphere.header.frame_id = view_.world().model().links()[0].name;
-    sphere.ns = "hands", sphere.id = static_cast<int>(markers.markers.size());
-    sphere.type = visualization_msgs::Marker::SPHERE;
-    sphere.pose = tf2::toMsg(tracker->hand.pose());
-    sphere.scale.x = sphere.scale.y = sphere.scale.z = 2 * hand_radius_;
-    sphere.color.a = tracker->hand.stale(now) ? 0.2f : 0.8f;
-    sphere.color.r = 0.95f, sphere.color.g = tracker->hand.closed() ? 0.3f : 0.75f, sphere.color.b = 0.5f;
-    sphere.lifetime = ros::Duration(0.5);
-    markers.markers.push_back(sphere);
+    std::lock_guard<std::mutex> lock(view_.mutex());
+    visualization_msgs::MarkerArray markers;
+    const double now = ros::WallTime::now().toSec();
+    for (auto& [id, tracker] : trackers_)
+    {
+      if (tracker->hand.held() && tracker->hand.stale(now))
+        release(*tracker, "stale: no pose for 0.5 s");
+      if (tracker->pushes && tracker->hand.stale(now, 0.4))  // take the sphere away before physics has to
+      {
+        publishHand(*tracker, 0.0);
+        tracker->pushes = false;
+      }
+      if (!tracker->hand.hasPose())
+        continue;
+      visualization_msgs::Marker sphere;
+      sphere.header.frame_id = view_.world().model().links()[0].name;
+      sphere.ns = "hands", sphere.id = static_cast<int>(markers.markers.size());
+      sphere.type = visualization_msgs::Marker::SPHERE;
+      sphere.pose = tf2::toMsg(tracker->hand.pose());
+      sphere.scale.x = sphere.scale.y = sphere.scale.z = 2 * hand_radius_;
+      sphere.color.a = tracker->hand.stale(now) ? 0.2f : 0.8f;
+      sphere.color.r = 0.95f, sphere.color.g = tracker->hand.closed() ? 0.3f : 0.75f, sphere.color.b = 0.5f;
+      sphere.lifetime = ros::Duration(0.5);
+      markers.markers.push_back(sphere);
+    }
+    hand_markers_.publish(markers);
+    if (!mouse_)
+      return;
+    for (auto& [robot, arm] : arms_)
+      if (!dragging_.count("mouse_" + robot))
+        tcps[robot] = arm->arm().basePose(view_.liveState()) *
+                      arm->arm().ikSolver().chain().fk(arm->arm().jointValues(view_.liveState()));
   }
-  hand_markers_.publish(markers);
-  if (!mouse_)
-    return;
-  for (auto& [robot, arm] : arms_)  // the mouse markers sit on the live TCPs while nobody drags them
-    if (!dragging_.count("mouse_" + robot))
-      mouse_->setPose(robot, tf2::toMsg(arm->arm().basePose(view_.liveState()) *
-                                        arm->arm().ikSolver().chain().fk(arm->arm().jointValues(view_.liveState()))));
-  mouse_->applyChanges();
+  // The mouse markers sit on the live TCPs while nobody drags them. The server is called without the
+  // world's mutex: it holds its own while calling onMouse, which takes the world's.
+  bool moved = false;
+  for (const auto& [robot, tcp] : tcps)
+  {
+    Eigen::Isometry3d& shown = mouse_at_[robot];
+    if ((tcp.translation() - shown.translation()).norm() < 1e-3)
+      continue;
+    mouse_->setPose(robot, tf2::toMsg(tcp));
+    shown = tcp, moved = true;
+  }
+  if (moved)
+    mouse_->applyChanges();
 }
 
 void FreeDrive::onMouse(const visualization_msgs::InteractiveMarkerFeedbackConstPtr& f)

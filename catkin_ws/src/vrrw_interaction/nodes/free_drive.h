@@ -59,5 +59,6 @@ private:
   ros::Timer discover_timer_, tick_timer_;
   std::unique_ptr<interactive_markers::InteractiveMarkerServer> mouse_;
   std::set<std::string> dragging_;
+  std::map<std::string, Eigen::Isometry3d> mouse_at_;  ///< where each mouse marker was last put
 };
 }  // namespace vrrw_interaction

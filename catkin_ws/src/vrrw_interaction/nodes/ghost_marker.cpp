@@ -32,12 +32,13 @@ GhostMarkers::GhostMarkers(WorldView& view, std::vector<GhostInterface*> ghosts,
     }
     draw(ghost->robot(), tcp, "");
     ghost->on_moved = [this, robot = ghost->robot()](const Eigen::Isometry3d& pose) {
-      // a service moved the ghost: the marker follows it (pose only, no full update) and turns green
-      std::lock_guard<std::mutex> lock(draw_mutex_);
-      if (!status_[robot].empty())
-        draw(robot, pose, "");
-      server_.setPose(robot, tf2::toMsg(pose));
-      server_.applyChanges();
+      // a service moved the ghost (the world's mutex is held: the server is left to the solver thread, as the
+      // server calls onFeedback holding its own mutex); the marker follows, green
+      {
+        std::lock_guard<std::mutex> lock(pending_mutex_);
+        moved_[robot] = pose;
+      }
+      wake_.notify_one();
     };
   }
   server_.applyChanges();
@@ -156,15 +157,24 @@ void GhostMarkers::solveLoop()
   while (true)
   {
     std::map<std::string, Pending> work;
+    std::map<std::string, Eigen::Isometry3d> moved;
     {
       std::unique_lock<std::mutex> lock(pending_mutex_);
-      wake_.wait(lock, [this] { return stop_ || !pending_.empty(); });
+      wake_.wait(lock, [this] { return stop_ || !pending_.empty() || !moved_.empty(); });
       if (stop_)
         return;
       work.swap(pending_);
+      moved.swap(moved_);
     }
     const ros::WallTime start = ros::WallTime::now();
-    bool changed = false;
+    bool changed = !moved.empty();
+    for (const auto& [robot, pose] : moved)
+    {
+      std::lock_guard<std::mutex> lock(draw_mutex_);
+      if (!status_[robot].empty())
+        draw(robot, pose, "");
+      server_.setPose(robot, tf2::toMsg(pose));
+    }
     for (const auto& [robot, pending] : work)
     {
       Eigen::Vector2d residual;

@@ -40,9 +40,10 @@ private:
   std::map<std::string, std::unique_ptr<interactive_markers::MenuHandler>> menus_;
   std::mutex draw_mutex_;  ///< guards the server's markers and status_ (the solver and services draw)
   std::map<std::string, std::string> status_;
-  std::mutex pending_mutex_;
+  std::mutex pending_mutex_;  ///< guards pending_, moved_ and stop_; never held while taking another lock
   std::condition_variable wake_;
   std::map<std::string, Pending> pending_;
+  std::map<std::string, Eigen::Isometry3d> moved_;  ///< ghosts moved by a service or the menu
   bool stop_ = false;
   std::thread solver_;
 };

@@ -62,12 +62,20 @@ int main(int argc, char** argv)
                            ROS_WARN_STREAM(robot << " free-drive: " << error);
                        });
   // the ghosts on tf (ghost/<link>), where rviz's "Ghosts" RobotModel and the render draw them
+  // at 30 Hz when a ghost (or a gripper) moved, else once a second
+  Eigen::VectorXd published;
+  ros::WallTime last_published;
   ros::Timer frames = nh.createTimer(ros::Duration(1.0 / 30.0), [&](const ros::TimerEvent&) {
     std::lock_guard<std::mutex> lock(view.mutex());
     Eigen::VectorXd state = view.liveState();
     for (GhostInterface* ghost : arms)
       ghost->ghostInto(state);
+    if (published.size() == state.size() && (published - state).cwiseAbs().maxCoeff() < 1e-9 &&
+        ros::WallTime::now() - last_published < ros::WallDuration(1.0))
+      return;
     view.publishGhostFrames(state);
+    published = state;
+    last_published = ros::WallTime::now();
   });
   ROS_INFO_STREAM("interaction: " << arms.size() << " arms of " << scene.name << " (" << mode << " mode)");
   ros::AsyncSpinner spinner(4);

@@ -280,6 +280,36 @@ TEST(InteractionFake, FreeDriveFollowsAHandAndStopsWhereItIs)
   EXPECT_TRUE(cell->hasEvent("free_drive_off"));
 }
 
+TEST(InteractionFake, AStaleHandLetsGo)
+{
+  const Eigen::VectorXd q = arm6(cell->robot.last());
+  const Eigen::Isometry3d wrist = cell->arm.world.model().relativeTransform(
+      cell->arm.arm.withJointValues(cell->arm.state, q), "world", "ur5e_wrist_3_link");
+  geometry_msgs::PoseStamped pose;
+  pose.header.frame_id = "world";
+  pose.pose = tf2::toMsg(wrist);
+  std_msgs::Float64 grip;
+  grip.data = 0.0;
+  cell->hand_grip.publish(grip);
+  for (int i = 0; i < 10; ++i, ros::WallDuration(0.02).sleep())
+    cell->hand_pose.publish(pose);
+  const std::size_t before = cell->events.size();
+  grip.data = 0.8;
+  cell->hand_grip.publish(grip);
+  ros::WallDuration(1.0).sleep();  // no pose for 1 s: a lost tracker
+  bool grabbed = false, stale = false;
+  const auto events = cell->events.all();
+  for (std::size_t i = before; i < events.size(); ++i)
+  {
+    grabbed = grabbed || events[i].kind == "grab";
+    stale = stale || (events[i].kind == "release" && events[i].detail.find("stale") != std::string::npos);
+  }
+  EXPECT_TRUE(grabbed);
+  EXPECT_TRUE(stale);
+  grip.data = 0.0;
+  cell->hand_grip.publish(grip);
+}
+
 int main(int argc, char** argv)
 {
   testing::InitGoogleTest(&argc, argv);

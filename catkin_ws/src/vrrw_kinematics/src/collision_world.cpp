@@ -5,55 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <random>
-#include <sstream>
-#include <sys/stat.h>
 
 #include "vrrw_kinematics/kinematics_error.h"
+#include "world_box.h"
 
 namespace vrrw_kinematics
 {
-namespace
-{
-std::uint64_t fnv1a(const std::string& text, std::uint64_t hash = 1469598103934665603ull)
-{
-  for (const unsigned char c : text)
-  {
-    hash ^= c;
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
-
-std::string describe(const Eigen::Isometry3d& pose)
-{
-  std::ostringstream out;
-  out.precision(12);
-  out << pose.matrix().reshaped().transpose();
-  return out.str();
-}
-
-std::string describe(const vrrw_scene::Shape& shape)
-{
-  std::ostringstream out;
-  out.precision(12);
-  out << static_cast<int>(shape.type) << " " << shape.box_size.transpose() << " " << shape.radius << " "
-      << shape.length << " " << shape.mesh_path << " " << describe(shape.origin);
-  return out.str();
-}
-
-/// Pairs more than two joint variables apart whose boxes came this close in some sample are not allowed
-/// as "never in collision": the samples cover their relative motion too sparsely to trust a near miss.
-constexpr double kNearMargin = 0.02;
-
-bool aabbOverlap(const Eigen::Vector3d& ca, const Eigen::Vector3d& ha, const Eigen::Vector3d& cb,
-                 const Eigen::Vector3d& hb)
-{
-  return ((ca - cb).cwiseAbs() - ha - hb).maxCoeff() <= 0.0;
-}
-}  // namespace
-
 void elementAabb(const CollisionElement& element, const Eigen::Isometry3d& pose, Eigen::Vector3d& center,
                  Eigen::Vector3d& half)
 {
@@ -203,28 +160,6 @@ void CollisionWorld::setAllowed(const std::string& a, const std::string& b, bool
   rebuildPairs();
 }
 
-std::string CollisionWorld::contentKey(int samples, std::uint64_t seed) const
-{
-  std::uint64_t hash = fnv1a(urdf_);
-  for (const CollisionBody& body : bodies_)
-  {
-    hash = fnv1a(body.name + " " + std::to_string(body.link) + " " + describe(body.offset), hash);
-    for (const int e : body.elements)
-    {
-      vrrw_scene::Shape shape;
-      shape.type = elements_[e].type;
-      shape.box_size = 2.0 * elements_[e].half_extents;
-      shape.radius = elements_[e].bounding_radius;
-      shape.origin = elements_[e].local;
-      hash = fnv1a(describe(shape), hash);
-    }
-  }
-  hash = fnv1a(std::to_string(samples) + " " + std::to_string(seed) + " acm-v3", hash);
-  char text[17];
-  std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(hash));
-  return text;
-}
-
 void CollisionWorld::bodyTransforms(const Eigen::VectorXd& variables, std::vector<Eigen::Isometry3d>& out) const
 {
   std::vector<Eigen::Isometry3d> links;
@@ -240,122 +175,6 @@ bool CollisionWorld::fixedInWorld(const CollisionBody& body) const
     if (model_.joints()[model_.links()[l].parent_joint].moves())
       return false;
   return true;
-}
-
-void CollisionWorld::computeAllowedCollisions(int samples, std::uint64_t seed)
-{
-  AllowedCollisionMatrix acm;
-  for (const auto& entry : acm_.entries())
-    if (entry.second == "attached" || entry.second == "user")
-      acm.allow(entry.first.first, entry.first.second, entry.second);
-
-  std::vector<int> link_body(model_.links().size(), -1);
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
-    if (!bodies_[b].object)
-      link_body[bodies_[b].link] = static_cast<int>(b);
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
-  {
-    if (bodies_[b].object)
-      continue;
-    for (int l = model_.links()[bodies_[b].link].parent_link; l >= 0; l = model_.links()[l].parent_link)
-      if (link_body[l] >= 0)
-      {
-        acm.allow(bodies_[b].name, bodies_[link_body[l]].name, "adjacent");
-        break;
-      }
-  }
-
-  std::vector<std::pair<int, int>> candidates;
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-    for (std::size_t j = i + 1; j < bodies_.size(); ++j)
-      if (!acm.allowed(bodies_[i].name, bodies_[j].name))
-        candidates.emplace_back(static_cast<int>(i), static_cast<int>(j));
-  std::vector<int> hits(candidates.size(), 0);
-  std::vector<bool> near(candidates.size(), false);
-  std::mt19937_64 rng(seed);
-  Eigen::VectorXd variables(model_.variableCount());
-  std::vector<Eigen::Isometry3d> body_poses;
-  std::vector<Eigen::Isometry3d> element_poses(elements_.size());
-  std::vector<Eigen::Vector3d> centers(elements_.size()), halves(elements_.size());
-  for (int s = 0; s < samples; ++s)
-  {
-    for (std::size_t v = 0; v < model_.variableCount(); ++v)
-    {
-      const JointModel& joint = model_.joints()[model_.variableJoints()[v]];
-      variables[v] = std::uniform_real_distribution<double>(joint.lower, joint.upper)(rng);
-    }
-    bodyTransforms(variables, body_poses);
-    for (std::size_t e = 0; e < elements_.size(); ++e)
-    {
-      element_poses[e] = body_poses[elements_[e].body] * elements_[e].local;
-      elementAabb(elements_[e], element_poses[e], centers[e], halves[e]);
-    }
-    for (std::size_t c = 0; c < candidates.size(); ++c)
-    {
-      bool collide = false;
-      for (const int ea : bodies_[candidates[c].first].elements)
-        for (const int eb : bodies_[candidates[c].second].elements)
-        {
-          const Eigen::Vector3d margin = Eigen::Vector3d::Constant(kNearMargin);
-          if (!aabbOverlap(centers[ea], halves[ea] + margin, centers[eb], halves[eb] + margin))
-            continue;
-          near[c] = true;
-          if (!collide && aabbOverlap(centers[ea], halves[ea], centers[eb], halves[eb]))
-            collide = elementsCollide(elements_[ea], element_poses[ea], elements_[eb], element_poses[eb]);
-        }
-      hits[c] += collide ? 1 : 0;
-    }
-  }
-  const auto variablesBetween = [this](int a, int b) {
-    std::vector<int> variables;
-    const auto climb = [&](int from, int to) {
-      for (int l = from; l != to && l > 0; l = model_.links()[l].parent_link)
-      {
-        const JointModel& joint = model_.joints()[model_.links()[l].parent_joint];
-        const int v = joint.variable >= 0 ? joint.variable : joint.mimic_variable;
-        if (v >= 0 && std::find(variables.begin(), variables.end(), v) == variables.end())
-          variables.push_back(v);
-      }
-    };
-    int common = a;
-    while (common > 0 && !model_.isDescendant(b, common))
-      common = model_.links()[common].parent_link;
-    climb(a, common);
-    climb(b, common);
-    return variables.size();
-  };
-  for (std::size_t c = 0; c < candidates.size(); ++c)
-  {
-    const CollisionBody& a = bodies_[candidates[c].first];
-    const CollisionBody& b = bodies_[candidates[c].second];
-    const bool same_robot = !a.robot.empty() && a.robot == b.robot;
-    if (hits[c] == samples && samples > 0 && (same_robot || (fixedInWorld(a) && fixedInWorld(b))))
-      acm.allow(a.name, b.name, "always");
-    else if (samples > 0 && same_robot && hits[c] == 0 && (!near[c] || variablesBetween(a.link, b.link) <= 2))
-      acm.allow(a.name, b.name, "never");
-  }
-  acm_ = acm;
-  rebuildPairs();
-}
-
-bool CollisionWorld::loadOrComputeAllowedCollisions(const std::string& cache_dir, int samples, std::uint64_t seed)
-{
-  const std::string key = contentKey(samples, seed);
-  const std::string path = cache_dir + "/acm_" + key + ".txt";
-  AllowedCollisionMatrix cached;
-  if (!cache_dir.empty() && cached.load(path, key))
-  {
-    acm_ = cached;
-    rebuildPairs();
-    return true;
-  }
-  computeAllowedCollisions(samples, seed);
-  if (!cache_dir.empty())
-  {
-    ::mkdir(cache_dir.c_str(), 0755);
-    acm_.save(path, key);
-  }
-  return false;
 }
 
 Contact CollisionWorld::check(const Eigen::VectorXd& variables, const std::string& robot) const

@@ -41,10 +41,9 @@ double seconds(Clock::time_point since)
 
 MotionPlanner::MotionPlanner(const CollisionWorld& world, const std::vector<std::string>& joints,
                              const std::string& tip_link, const Eigen::VectorXd& world_state, double resolution)
-  : checker_(world, joints, world_state), bounds_(world.model(), joints), resolution_(resolution)
+  : checker_(world, joints, world_state), bounds_(world.model(), joints), segments_(checker_, resolution)
 {
   const RobotModel& model = world.model();
-  reach_ = checker_.reach();
 
   const std::string base = model.links()[model.joints()[model.jointIndex(joints.front())].parent_link].name;
   const KinematicChain chain(model, base, tip_link);
@@ -69,7 +68,7 @@ MotionPlanner::MotionPlanner(const CollisionWorld& world, const std::vector<std:
   si_ = std::make_shared<ob::SpaceInformation>(space);
   const std::size_t n = joints.size();
   si_->setStateValidityChecker([this, n](const ob::State* state) { return checker_.valid(toEigen(state, n)); });
-  si_->setMotionValidator(std::make_shared<ResolutionMotionValidator>(si_, *this));
+  si_->setMotionValidator(std::make_shared<ResolutionMotionValidator>(si_, segments_));
   si_->setup();
 }
 
@@ -80,48 +79,12 @@ bool MotionPlanner::stateValid(const Eigen::VectorXd& q)
   return bounds_.violation(q).empty() && checker_.valid(q);
 }
 
-std::size_t MotionPlanner::segmentSteps(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const
-{
-  double travel = 0.0;
-  for (Eigen::Index i = 0; i < a.size(); ++i)
-    travel += reach_[i] * std::abs(b[i] - a[i]);
-  return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(travel / resolution_)));
-}
-
-bool MotionPlanner::segmentValid(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double* valid_fraction)
-{
-  const std::size_t steps = segmentSteps(a, b);
-  const auto at = [&](std::size_t s) {
-    return Eigen::VectorXd(a + (static_cast<double>(s) / static_cast<double>(steps)) * (b - a));
-  };
-  if (valid_fraction)
-  {
-    for (std::size_t s = 1; s <= steps; ++s)
-      if (!checker_.valid(at(s)))
-      {
-        *valid_fraction = static_cast<double>(s - 1) / static_cast<double>(steps);
-        return false;
-      }
-    return true;
-  }
-  if (!checker_.valid(b))
-    return false;
-  std::size_t stride = 1;
-  while (stride < steps)
-    stride *= 2;
-  for (; stride >= 1; stride /= 2)
-    for (std::size_t s = stride; s < steps; s += 2 * stride)
-      if (!checker_.valid(at(s)))
-        return false;
-  return true;
-}
-
 bool MotionPlanner::pathValid(const std::vector<Eigen::VectorXd>& path)
 {
   if (path.empty() || !stateValid(path.front()))
     return false;
   for (std::size_t i = 1; i < path.size(); ++i)
-    if (!bounds_.violation(path[i]).empty() || !segmentValid(path[i - 1], path[i]))
+    if (!bounds_.violation(path[i]).empty() || !segments_.valid(path[i - 1], path[i]))
       return false;
   return true;
 }

@@ -1,19 +1,20 @@
 #include "resolution_motion_validator.h"
 
+#include <ompl/base/SpaceInformation.h>
+
 #include "ompl_state.h"
-#include "vrrw_kinematics/motion_planner.h"
 
 namespace vrrw_kinematics
 {
-ResolutionMotionValidator::ResolutionMotionValidator(const ompl::base::SpaceInformationPtr& si, MotionPlanner& planner)
-  : ompl::base::MotionValidator(si), planner_(planner)
+ResolutionMotionValidator::ResolutionMotionValidator(const ompl::base::SpaceInformationPtr& si,
+                                                     SegmentChecker& segments)
+  : ompl::base::MotionValidator(si), segments_(segments), dimension_(si->getStateDimension())
 {
 }
 
 bool ResolutionMotionValidator::checkMotion(const ompl::base::State* s1, const ompl::base::State* s2) const
 {
-  const std::size_t n = planner_.size();
-  const bool ok = planner_.segmentValid(toEigen(s1, n), toEigen(s2, n));
+  const bool ok = segments_.valid(toEigen(s1, dimension_), toEigen(s2, dimension_));
   (ok ? valid_ : invalid_)++;
   return ok;
 }
@@ -21,10 +22,9 @@ bool ResolutionMotionValidator::checkMotion(const ompl::base::State* s1, const o
 bool ResolutionMotionValidator::checkMotion(const ompl::base::State* s1, const ompl::base::State* s2,
                                             std::pair<ompl::base::State*, double>& last_valid) const
 {
-  const std::size_t n = planner_.size();
-  const Eigen::VectorXd a = toEigen(s1, n), b = toEigen(s2, n);
+  const Eigen::VectorXd a = toEigen(s1, dimension_), b = toEigen(s2, dimension_);
   double fraction = 1.0;
-  const bool ok = planner_.segmentValid(a, b, &fraction);
+  const bool ok = segments_.valid(a, b, &fraction);
   if (!ok)
   {
     if (last_valid.first)

@@ -1,7 +1,5 @@
 #include "vrrw_kinematics/robot_model.h"
 
-#include <kdl/tree.hpp>
-#include <kdl_parser/kdl_parser.hpp>
 #include <urdf_parser/urdf_parser.h>
 
 #include <cstdlib>
@@ -105,9 +103,6 @@ RobotModel RobotModel::fromUrdf(const std::string& urdf_xml)
   const urdf::ModelInterfaceSharedPtr urdf_model = urdf::parseURDF(urdf_xml);
   if (!urdf_model || !urdf_model->getRoot())
     throw KinematicsError(ErrorCode::InvalidUrdf, "urdf: not a valid URDF document (urdfdom could not parse it)");
-  KDL::Tree tree;
-  if (!kdl_parser::treeFromUrdfModel(*urdf_model, tree))
-    throw KinematicsError(ErrorCode::InvalidUrdf, "urdf: kdl_parser could not build a kinematic tree");
 
   RobotModel model;
   model.name_ = urdf_model->getName();

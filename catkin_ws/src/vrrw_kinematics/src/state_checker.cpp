@@ -33,6 +33,27 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
   if (static_cast<std::size_t>(variables.size()) != model.variableCount())
     throw KinematicsError(ErrorCode::InvalidArgument, "state: expected " + std::to_string(model.variableCount()) +
                                                           " joint values, got " + std::to_string(variables.size()));
+  readGroup(joints);
+  std::vector<Eigen::Isometry3d> link_poses;
+  model.linkTransforms(variables, link_poses);
+  const std::vector<int> anchor_of = anchorLinks(link_poses);
+  std::vector<int> slot_of, moving_body_of;
+  placeBodies(link_poses, anchor_of, slot_of, moving_body_of);
+  boundStaticBodies();
+  groupCheckedPairs(slot_of, moving_body_of);
+
+  anchor_poses_.resize(anchors_.size());
+  sphere_centers_.resize(moving_bodies_.size());
+  element_poses_.resize(moving_elements_.size());
+  centers_.resize(moving_elements_.size());
+  halves_.resize(moving_elements_.size());
+  stamps_.assign(moving_elements_.size(), 0);
+  computeReach();
+}
+
+void StateChecker::readGroup(const std::vector<std::string>& joints)
+{
+  const RobotModel& model = world_.model();
   for (const std::string& name : joints)
   {
     const int j = model.jointIndex(name);
@@ -41,10 +62,12 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
     group_.push_back(j);
     joint_names_.push_back(name);
   }
-  std::vector<Eigen::Isometry3d> link_poses;
-  model.linkTransforms(variables, link_poses);
+}
 
+std::vector<int> StateChecker::anchorLinks(const std::vector<Eigen::Isometry3d>& link_poses)
+{
   // anchor_of[l]: the group joint whose child frame link l hangs from rigidly, -1 when it does not move.
+  const RobotModel& model = world_.model();
   std::vector<int> anchor_of(model.links().size(), -1);
   for (std::size_t l = 1; l < model.links().size(); ++l)
   {
@@ -66,18 +89,23 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
     anchor_of[l] = static_cast<int>(anchors_.size());
     anchors_.push_back(anchor);
   }
-  anchor_poses_.resize(anchors_.size());
+  return anchor_of;
+}
+
+void StateChecker::placeBodies(const std::vector<Eigen::Isometry3d>& link_poses, const std::vector<int>& anchor_of,
+                               std::vector<int>& slot_of, std::vector<int>& moving_body_of)
+{
+  const RobotModel& model = world_.model();
   std::vector<Eigen::Isometry3d> anchor_at_start(anchors_.size());
   for (std::size_t a = 0; a < anchors_.size(); ++a)
     anchor_at_start[a] = link_poses[model.joints()[anchors_[a].joint].child_link];
-
-  const auto& elements = world.elements();
-  const auto& bodies = world.bodies();
+  const auto& elements = world_.elements();
+  const auto& bodies = world_.bodies();
   static_poses_.resize(elements.size());
   static_centers_.resize(elements.size());
   static_halves_.resize(elements.size());
-  std::vector<int> slot_of(elements.size(), -1);
-  std::vector<int> moving_body_of(bodies.size(), -1);
+  slot_of.assign(elements.size(), -1);
+  moving_body_of.assign(bodies.size(), -1);
   for (std::size_t b = 0; b < bodies.size(); ++b)
   {
     const CollisionBody& body = bodies[b];
@@ -103,6 +131,11 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
     moving_body_of[b] = static_cast<int>(moving_bodies_.size());
     moving_bodies_.push_back(moving_body);
   }
+}
+
+void StateChecker::boundStaticBodies()
+{
+  const auto& bodies = world_.bodies();
   body_centers_.resize(bodies.size());
   body_halves_.resize(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b)
@@ -116,9 +149,14 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
     body_centers_[b] = 0.5 * (low + high);
     body_halves_[b] = 0.5 * (high - low);
   }
+}
 
+void StateChecker::groupCheckedPairs(const std::vector<int>& slot_of, const std::vector<int>& moving_body_of)
+{
+  const auto& elements = world_.elements();
+  const auto& bodies = world_.bodies();
   std::map<std::pair<int, int>, BodyPair> grouped;
-  for (const auto& pair : world.checkedPairs())
+  for (const auto& pair : world_.checkedPairs())
   {
     int first = pair.first, second = pair.second;
     if (slot_of[first] < 0)
@@ -156,13 +194,6 @@ StateChecker::StateChecker(const CollisionWorld& world, const std::vector<std::s
       static_bodies.push_back(pair.b);
   }
   tree_root_ = static_bodies.empty() ? -1 : buildTree(static_bodies, 0, static_bodies.size());
-
-  sphere_centers_.resize(moving_bodies_.size());
-  element_poses_.resize(moving_elements_.size());
-  centers_.resize(moving_elements_.size());
-  halves_.resize(moving_elements_.size());
-  stamps_.assign(moving_elements_.size(), 0);
-  computeReach();
 }
 
 int StateChecker::buildTree(std::vector<int>& bodies, std::size_t begin, std::size_t end)

@@ -149,6 +149,189 @@ struct Interval
   double from = 0.0;  ///< arc length within the piece
   double to = 0.0;
 };
+
+/// Path derivatives (tangent d1, curvature d2) at both ends of every grid interval, a column each.
+struct GridDerivatives
+{
+  Eigen::MatrixXd d1_from, d2_from, d1_to, d2_to;
+};
+
+/// The path without repeated waypoints; throws for a waypoint that is not `n` finite values.
+std::vector<Eigen::VectorXd> distinctWaypoints(const std::vector<Eigen::VectorXd>& path, std::size_t n)
+{
+  std::vector<Eigen::VectorXd> waypoints;
+  for (const Eigen::VectorXd& q : path)
+  {
+    if (static_cast<std::size_t>(q.size()) != n || !q.allFinite())
+      throw KinematicsError(ErrorCode::InvalidArgument, "time parameterization: waypoint " +
+                                                            std::to_string(waypoints.size()) +
+                                                            " is not " + std::to_string(n) + " finite values");
+    if (waypoints.empty() || (q - waypoints.back()).norm() > kTiny)
+      waypoints.push_back(q);
+  }
+  if (waypoints.empty())
+    throw KinematicsError(ErrorCode::InvalidArgument, "time parameterization: empty path");
+  return waypoints;
+}
+
+void appendPoint(vrrw_trajectory::JointTrajectory& trajectory, double t, const Eigen::VectorXd& q,
+                 const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd)
+{
+  vrrw_trajectory::TrajectoryPoint point;
+  point.time = t;
+  point.positions.assign(q.data(), q.data() + q.size());
+  point.velocities.assign(qd.data(), qd.data() + qd.size());
+  point.accelerations.assign(qdd.data(), qdd.data() + qdd.size());
+  trajectory.points.push_back(point);
+}
+
+/// The arc-length grid: `path_step` on blends, where curvature limits the speed, five times coarser on lines.
+std::vector<Interval> pathGrid(const std::vector<PathPiece>& pieces, double path_step)
+{
+  std::vector<Interval> intervals;
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    const double step = pieces[p].circular ? path_step : 5.0 * path_step;
+    const int count = std::max(2, static_cast<int>(std::ceil(pieces[p].length / step)));
+    for (int k = 0; k < count; ++k)
+      intervals.push_back(Interval{ static_cast<int>(p), pieces[p].length * k / count,
+                                    pieces[p].length * (k + 1) / count });
+  }
+  return intervals;
+}
+
+GridDerivatives gridDerivatives(const std::vector<PathPiece>& pieces, const std::vector<Interval>& intervals,
+                                std::size_t n)
+{
+  const std::size_t m = intervals.size();
+  const Eigen::Index width = static_cast<Eigen::Index>(n);
+  GridDerivatives d{ Eigen::MatrixXd(width, m), Eigen::MatrixXd(width, m), Eigen::MatrixXd(width, m),
+                     Eigen::MatrixXd(width, m) };
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    const PathPiece& piece = pieces[intervals[k].piece];
+    const Eigen::Index c = static_cast<Eigen::Index>(k);
+    d.d1_from.col(c) = piece.tangent(intervals[k].from);
+    d.d2_from.col(c) = piece.curvature(intervals[k].from);
+    d.d1_to.col(c) = piece.tangent(intervals[k].to);
+    d.d2_to.col(c) = piece.curvature(intervals[k].to);
+  }
+  return d;
+}
+
+/// Largest squared path velocity at every grid point: 0 at both ends and at corners the blends left sharp.
+std::vector<double> velocityLimitCurve(const GridDerivatives& d, const PhasePlane& plane)
+{
+  const std::size_t m = static_cast<std::size_t>(d.d1_from.cols());
+  std::vector<double> limit(m + 1, 0.0);
+  for (std::size_t k = 1; k < m; ++k)
+  {
+    const Eigen::Index c = static_cast<Eigen::Index>(k);
+    const bool corner = (d.d1_to.col(c - 1) - d.d1_from.col(c)).norm() > 1e-6;
+    limit[k] = corner ? 0.0
+                      : std::min(plane.maxSquaredVelocity(d.d1_to.col(c - 1), d.d2_to.col(c - 1)),
+                                 plane.maxSquaredVelocity(d.d1_from.col(c), d.d2_from.col(c)));
+  }
+  return limit;
+}
+
+/// Squared path velocity at every grid point. Integrates forward at the largest and backward at the
+/// smallest path acceleration under the limit curve; where the zero-order hold of the path acceleration
+/// breaks a true limit at either end of an interval (on blends, where q'' turns), lowers the limit curve
+/// there and integrates again.
+std::vector<double> squaredPathVelocity(const std::vector<Interval>& intervals, const GridDerivatives& d,
+                                        const PhasePlane& plane, const PhasePlane& true_plane,
+                                        std::vector<double> limit)
+{
+  const std::size_t m = intervals.size();
+  std::vector<double> x(m + 1, 0.0);
+  double lower = 0.0, upper = 0.0;
+  for (int pass = 0; pass < 40; ++pass)
+  {
+    x.assign(m + 1, 0.0);
+    for (std::size_t k = 0; k < m; ++k)
+    {
+      const double ds = intervals[k].to - intervals[k].from;
+      const Eigen::Index c = static_cast<Eigen::Index>(k);
+      plane.accelerationRange(d.d1_from.col(c), d.d2_from.col(c), x[k], lower, upper);
+      x[k + 1] = std::max(0.0, std::min(limit[k + 1], x[k] + 2.0 * ds * std::max(0.0, upper)));
+    }
+    x[m] = 0.0;
+    for (std::size_t k = m; k-- > 0;)
+    {
+      const double ds = intervals[k].to - intervals[k].from;
+      const Eigen::Index c = static_cast<Eigen::Index>(k);
+      plane.accelerationRange(d.d1_to.col(c), d.d2_to.col(c), x[k + 1], lower, upper);
+      x[k] = std::min(x[k], x[k + 1] - 2.0 * ds * std::min(0.0, lower));
+    }
+    bool feasible = true;
+    for (std::size_t k = 0; k < m; ++k)
+    {
+      const double ds = intervals[k].to - intervals[k].from;
+      const double u = (x[k + 1] - x[k]) / (2.0 * ds);
+      const Eigen::Index c = static_cast<Eigen::Index>(k);
+      for (const bool at_end : { false, true })
+      {
+        if (at_end)
+          true_plane.accelerationRange(d.d1_to.col(c), d.d2_to.col(c), x[k + 1], lower, upper);
+        else
+          true_plane.accelerationRange(d.d1_from.col(c), d.d2_from.col(c), x[k], lower, upper);
+        if (u < lower - 1e-12 || u > upper + 1e-12)
+        {
+          feasible = false;
+          limit[k] = std::min(limit[k], 0.9 * x[k]);
+          limit[k + 1] = std::min(limit[k + 1], 0.9 * x[k + 1]);
+        }
+      }
+    }
+    if (feasible)
+      break;
+  }
+  return x;
+}
+
+/// Time at every grid point: constant path acceleration across each interval.
+std::vector<double> gridTimes(const std::vector<Interval>& intervals, const std::vector<double>& x)
+{
+  std::vector<double> times(intervals.size() + 1, 0.0);
+  for (std::size_t k = 0; k < intervals.size(); ++k)
+  {
+    const double ds = intervals[k].to - intervals[k].from;
+    times[k + 1] = times[k] + 2.0 * ds / std::max(std::sqrt(x[k]) + std::sqrt(x[k + 1]), kTiny);
+  }
+  return times;
+}
+
+/// Points every `period` along the grid's motion, then the goal at rest.
+void sampleMotion(const std::vector<PathPiece>& pieces, const std::vector<Interval>& intervals,
+                  const std::vector<double>& x, const std::vector<double>& times, double period,
+                  const Eigen::VectorXd& goal, vrrw_trajectory::JointTrajectory& trajectory)
+{
+  const std::size_t m = intervals.size();
+  const double duration = times[m];
+  std::size_t k = 0;
+  for (std::size_t sample = 0;; ++sample)
+  {
+    const double t = static_cast<double>(sample) * period;
+    if (t >= duration - 1e-9)
+      break;
+    while (k + 1 < m && times[k + 1] <= t)
+      ++k;
+    const Interval& interval = intervals[k];
+    const PathPiece& piece = pieces[interval.piece];
+    const double ds = interval.to - interval.from;
+    const double u = (x[k + 1] - x[k]) / (2.0 * ds);
+    const double tau = t - times[k];
+    const double speed = std::max(0.0, std::sqrt(x[k]) + u * tau);
+    const double s = std::min(interval.to, interval.from + std::sqrt(x[k]) * tau + 0.5 * u * tau * tau);
+    appendPoint(trajectory, t, piece.position(s), piece.tangent(s) * speed,
+                piece.tangent(s) * u + piece.curvature(s) * speed * speed);
+  }
+  const Interval& last = intervals.back();
+  const PathPiece& last_piece = pieces[last.piece];
+  const double u_last = (x[m] - x[m - 1]) / (2.0 * (last.to - last.from));
+  appendPoint(trajectory, duration, goal, Eigen::VectorXd::Zero(goal.size()), last_piece.tangent(last.to) * u_last);
+}
 }  // namespace
 
 TimeParameterization::TimeParameterization(const TimingOptions& options) : options_(options)
@@ -175,145 +358,23 @@ vrrw_trajectory::JointTrajectory TimeParameterization::compute(const std::vector
   if (joint_names.size() != n)
     throw KinematicsError(ErrorCode::InvalidArgument, "time parameterization: " + std::to_string(joint_names.size()) +
                                                           " joint names for " + std::to_string(n) + " limits");
-  std::vector<Eigen::VectorXd> waypoints;
-  for (const Eigen::VectorXd& q : path)
-  {
-    if (static_cast<std::size_t>(q.size()) != n || !q.allFinite())
-      throw KinematicsError(ErrorCode::InvalidArgument, "time parameterization: waypoint " +
-                                                            std::to_string(waypoints.size()) +
-                                                            " is not " + std::to_string(n) + " finite values");
-    if (waypoints.empty() || (q - waypoints.back()).norm() > kTiny)
-      waypoints.push_back(q);
-  }
-  if (waypoints.empty())
-    throw KinematicsError(ErrorCode::InvalidArgument, "time parameterization: empty path");
-
+  const std::vector<Eigen::VectorXd> waypoints = distinctWaypoints(path, n);
   vrrw_trajectory::JointTrajectory trajectory;
   trajectory.joint_names = joint_names;
-  const auto addPoint = [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) {
-    vrrw_trajectory::TrajectoryPoint point;
-    point.time = t;
-    point.positions.assign(q.data(), q.data() + n);
-    point.velocities.assign(qd.data(), qd.data() + n);
-    point.accelerations.assign(qdd.data(), qdd.data() + n);
-    trajectory.points.push_back(point);
-  };
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
   if (waypoints.size() == 1)
   {
-    addPoint(0.0, waypoints.front(), zero, zero);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+    appendPoint(trajectory, 0.0, waypoints.front(), zero, zero);
     return trajectory;
   }
-
   const std::vector<PathPiece> pieces = blendedPath(waypoints, options_.max_deviation);
-  std::vector<Interval> intervals;
-  for (std::size_t p = 0; p < pieces.size(); ++p)
-  {
-    const double step = pieces[p].circular ? options_.path_step : 5.0 * options_.path_step;
-    const int count = std::max(2, static_cast<int>(std::ceil(pieces[p].length / step)));
-    for (int k = 0; k < count; ++k)
-      intervals.push_back(Interval{ static_cast<int>(p), pieces[p].length * k / count,
-                                    pieces[p].length * (k + 1) / count });
-  }
+  const std::vector<Interval> intervals = pathGrid(pieces, options_.path_step);
+  const GridDerivatives derivatives = gridDerivatives(pieces, intervals, n);
   const PhasePlane plane(options_.max_velocity, options_.max_acceleration, options_.safety);
-  const std::size_t m = intervals.size();
-  const Eigen::Index width = static_cast<Eigen::Index>(n);
-  Eigen::MatrixXd d1_from(width, m), d2_from(width, m), d1_to(width, m), d2_to(width, m);
-  for (std::size_t k = 0; k < m; ++k)
-  {
-    const PathPiece& piece = pieces[intervals[k].piece];
-    const Eigen::Index c = static_cast<Eigen::Index>(k);
-    d1_from.col(c) = piece.tangent(intervals[k].from);
-    d2_from.col(c) = piece.curvature(intervals[k].from);
-    d1_to.col(c) = piece.tangent(intervals[k].to);
-    d2_to.col(c) = piece.curvature(intervals[k].to);
-  }
-  std::vector<double> limit(m + 1, 0.0);
-  for (std::size_t k = 1; k < m; ++k)
-  {
-    const Eigen::Index c = static_cast<Eigen::Index>(k);
-    const bool corner = (d1_to.col(c - 1) - d1_from.col(c)).norm() > 1e-6;
-    limit[k] = corner ? 0.0
-                      : std::min(plane.maxSquaredVelocity(d1_to.col(c - 1), d2_to.col(c - 1)),
-                                 plane.maxSquaredVelocity(d1_from.col(c), d2_from.col(c)));
-  }
-  // Integrate forward at the largest and backward at the smallest path acceleration under the limit
-  // curve; where the zero-order hold of the path acceleration breaks a true limit at either end of
-  // an interval (on blends, where q'' turns), lower the limit curve there and integrate again.
   const PhasePlane true_plane(options_.max_velocity, options_.max_acceleration, 1.0);
-  std::vector<double> x(m + 1, 0.0);
-  double lower = 0.0, upper = 0.0;
-  for (int pass = 0; pass < 40; ++pass)
-  {
-    x.assign(m + 1, 0.0);
-    for (std::size_t k = 0; k < m; ++k)
-    {
-      const double ds = intervals[k].to - intervals[k].from;
-      const Eigen::Index c = static_cast<Eigen::Index>(k);
-      plane.accelerationRange(d1_from.col(c), d2_from.col(c), x[k], lower, upper);
-      x[k + 1] = std::max(0.0, std::min(limit[k + 1], x[k] + 2.0 * ds * std::max(0.0, upper)));
-    }
-    x[m] = 0.0;
-    for (std::size_t k = m; k-- > 0;)
-    {
-      const double ds = intervals[k].to - intervals[k].from;
-      const Eigen::Index c = static_cast<Eigen::Index>(k);
-      plane.accelerationRange(d1_to.col(c), d2_to.col(c), x[k + 1], lower, upper);
-      x[k] = std::min(x[k], x[k + 1] - 2.0 * ds * std::min(0.0, lower));
-    }
-    bool feasible = true;
-    for (std::size_t k = 0; k < m; ++k)
-    {
-      const double ds = intervals[k].to - intervals[k].from;
-      const double u = (x[k + 1] - x[k]) / (2.0 * ds);
-      const Eigen::Index c = static_cast<Eigen::Index>(k);
-      for (const bool at_end : { false, true })
-      {
-        if (at_end)
-          true_plane.accelerationRange(d1_to.col(c), d2_to.col(c), x[k + 1], lower, upper);
-        else
-          true_plane.accelerationRange(d1_from.col(c), d2_from.col(c), x[k], lower, upper);
-        if (u < lower - 1e-12 || u > upper + 1e-12)
-        {
-          feasible = false;
-          limit[k] = std::min(limit[k], 0.9 * x[k]);
-          limit[k + 1] = std::min(limit[k + 1], 0.9 * x[k + 1]);
-        }
-      }
-    }
-    if (feasible)
-      break;
-  }
-
-  std::vector<double> times(m + 1, 0.0);
-  for (std::size_t k = 0; k < m; ++k)
-  {
-    const double ds = intervals[k].to - intervals[k].from;
-    times[k + 1] = times[k] + 2.0 * ds / std::max(std::sqrt(x[k]) + std::sqrt(x[k + 1]), kTiny);
-  }
-  const double duration = times[m];
-  std::size_t k = 0;
-  for (std::size_t sample = 0;; ++sample)
-  {
-    const double t = static_cast<double>(sample) * options_.sample_period;
-    if (t >= duration - 1e-9)
-      break;
-    while (k + 1 < m && times[k + 1] <= t)
-      ++k;
-    const Interval& interval = intervals[k];
-    const PathPiece& piece = pieces[interval.piece];
-    const double ds = interval.to - interval.from;
-    const double u = (x[k + 1] - x[k]) / (2.0 * ds);
-    const double tau = t - times[k];
-    const double speed = std::max(0.0, std::sqrt(x[k]) + u * tau);
-    const double s = std::min(interval.to, interval.from + std::sqrt(x[k]) * tau + 0.5 * u * tau * tau);
-    addPoint(t, piece.position(s), piece.tangent(s) * speed,
-             piece.tangent(s) * u + piece.curvature(s) * speed * speed);
-  }
-  const Interval& last = intervals.back();
-  const PathPiece& last_piece = pieces[last.piece];
-  const double u_last = (x[m] - x[m - 1]) / (2.0 * (last.to - last.from));
-  addPoint(duration, waypoints.back(), zero, last_piece.tangent(last.to) * u_last);
+  const std::vector<double> x = squaredPathVelocity(intervals, derivatives, plane, true_plane,
+                                                    velocityLimitCurve(derivatives, plane));
+  sampleMotion(pieces, intervals, x, gridTimes(intervals, x), options_.sample_period, waypoints.back(), trajectory);
   return trajectory;
 }
 }  // namespace vrrw_kinematics

@@ -58,6 +58,7 @@ public:
     JointTrajectory trajectory;
     trajectory.joint_names = jointNames(header, header_line);
     const std::size_t n = trajectory.joint_names.size();
+    trajectory.extra_names.assign(header.begin() + static_cast<std::ptrdiff_t>(1 + 2 * n), header.end());
 
     std::vector<std::string> row;
     while (nextRow(row))
@@ -74,6 +75,10 @@ public:
         point.positions[j] = number(row[1 + j], header[1 + j]);
         point.velocities[j] = number(row[1 + n + j], header[1 + n + j]);
       }
+      if (!trajectory.extra_names.empty())
+        trajectory.extras.emplace_back();
+      for (std::size_t e = 1 + 2 * n; e < row.size(); ++e)
+        trajectory.extras.back().push_back(number(row[e], header[e]));
       if (!trajectory.points.empty() && !(point.time > trajectory.points.back().time))
         fail(line_number_, "time " + row[0] + " is not after the previous time " +
                                formatNumber(trajectory.points.back().time) + " (times must strictly increase)");
@@ -105,10 +110,10 @@ private:
   {
     if (header[0] != "t" && header[0] != "time")
       fail(line, "header must start with 't' (time in seconds), found '" + header[0] + "' (is the header row missing?)");
-    if (header.size() < 3 || header.size() % 2 == 0)
+    const std::size_t n = jointCount(header);
+    if (n == 0)
       fail(line, "wrong column count: header has " + std::to_string(header.size()) +
                      " columns, expected 1 + 2n ('t', n joint positions, n '<joint>_vel' velocities)");
-    const std::size_t n = (header.size() - 1) / 2;
     std::vector<std::string> names(header.begin() + 1, header.begin() + 1 + static_cast<std::ptrdiff_t>(n));
     std::set<std::string> seen;
     for (std::size_t j = 0; j < n; ++j)
@@ -122,7 +127,23 @@ private:
         fail(line, "header column " + std::to_string(n + j + 2) + " is '" + velocity + "', expected '" + names[j] +
                        kVelocitySuffix + "' (velocity of joint '" + names[j] + "')");
     }
+    std::set<std::string> extras;
+    for (std::size_t e = 1 + 2 * n; e < header.size(); ++e)
+      if (header[e].empty() || seen.count(header[e]) || !extras.insert(header[e]).second)
+        fail(line, "header column " + std::to_string(e + 1) + " ('" + header[e] +
+                       "') must be a new, non-empty name (an extra column after the velocities)");
     return names;
+  }
+
+  /// The joint count n: the first velocity column names joint 1's velocity; columns after the 2n
+  /// joint columns are extras. Without such a column the header must be exactly 1 + 2n (0: it is not).
+  static std::size_t jointCount(const std::vector<std::string>& header)
+  {
+    for (std::size_t n = 1; header.size() >= 1 + 2 * n; ++n)
+      if (header[1 + n] == header[1] + kVelocitySuffix ||
+          (!seedVelocityName(header[1]).empty() && header[1 + n] == seedVelocityName(header[1])))
+        return n;
+    return header.size() < 3 || header.size() % 2 == 0 ? 0 : (header.size() - 1) / 2;
   }
 
   static std::string seedVelocityName(const std::string& position_name)
@@ -165,6 +186,9 @@ void checkWritable(const JointTrajectory& trajectory, const std::string& source)
   const std::size_t n = trajectory.joint_names.size();
   if (n == 0)
     throw TrajectoryError(source + ": no joint names");
+  if (!trajectory.extra_names.empty() && trajectory.extras.size() != trajectory.points.size())
+    throw TrajectoryError(source + ": " + std::to_string(trajectory.extras.size()) + " rows of extra values for " +
+                          std::to_string(trajectory.points.size()) + " points");
   for (std::size_t k = 0; k < trajectory.points.size(); ++k)
   {
     const TrajectoryPoint& point = trajectory.points[k];
@@ -173,9 +197,15 @@ void checkWritable(const JointTrajectory& trajectory, const std::string& source)
       throw TrajectoryError(where + std::to_string(point.positions.size()) + " positions and " +
                             std::to_string(point.velocities.size()) + " velocities for " + std::to_string(n) +
                             " joints");
+    const std::size_t extras = trajectory.extra_names.empty() ? 0 : trajectory.extras.at(k).size();
+    if (extras != trajectory.extra_names.size())
+      throw TrajectoryError(where + std::to_string(extras) + " extra values for " +
+                            std::to_string(trajectory.extra_names.size()) + " extra columns");
     bool finite = std::isfinite(point.time);
     for (std::size_t j = 0; j < n; ++j)
       finite = finite && std::isfinite(point.positions[j]) && std::isfinite(point.velocities[j]);
+    for (std::size_t e = 0; e < extras; ++e)
+      finite = finite && std::isfinite(trajectory.extras[k][e]);
     if (!finite)
       throw TrajectoryError(where + "value is not finite");
     if (k > 0 && !(point.time > trajectory.points[k - 1].time))
@@ -206,14 +236,20 @@ std::string csvText(const JointTrajectory& trajectory)
     text += "," + name;
   for (const auto& name : trajectory.joint_names)
     text += "," + name + kVelocitySuffix;
+  for (const auto& name : trajectory.extra_names)
+    text += "," + name;
   text += '\n';
-  for (const TrajectoryPoint& point : trajectory.points)
+  for (std::size_t k = 0; k < trajectory.points.size(); ++k)
   {
+    const TrajectoryPoint& point = trajectory.points[k];
     text += formatNumber(point.time);
     for (double q : point.positions)
       (text += ',') += formatNumber(q);
     for (double qd : point.velocities)
       (text += ',') += formatNumber(qd);
+    if (!trajectory.extra_names.empty())
+      for (double value : trajectory.extras[k])
+        (text += ',') += formatNumber(value);
     text += '\n';
   }
   return text;

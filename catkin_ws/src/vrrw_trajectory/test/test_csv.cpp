@@ -181,3 +181,18 @@ TEST(Csv, WriterRejectsWhatTheReaderWouldReject)
   EXPECT_THROW(writeCsv(out, trajectory, "mem"), TrajectoryError);
   EXPECT_TRUE(out.str().empty());
 }
+
+TEST(Csv, ExtraColumnsAfterTheVelocitiesRoundTrip)
+{
+  const JointTrajectory read = parse("t,q1,q2,qd1,qd2,gripper\n0,1,2,3,4,0.5\n0.1,1,2,3,4,0.25\n");
+  ASSERT_EQ(read.joint_names.size(), 2u);
+  ASSERT_EQ(read.extra_names, std::vector<std::string>{ "gripper" });
+  ASSERT_EQ(read.extras.size(), 2u);
+  EXPECT_EQ(read.extras[1], std::vector<double>{ 0.25 });
+  std::ostringstream out;
+  writeCsv(out, read, "demo.csv");
+  EXPECT_EQ(out.str(), "t,q1,q2,q1_vel,q2_vel,gripper\n0,1,2,3,4,0.5\n0.1,1,2,3,4,0.25\n");
+  EXPECT_EQ(errorOf("t,a,a_vel,a\n0,1,2,3\n1,1,2,3\n"),
+            "demo.csv:1: header column 4 ('a') must be a new, non-empty name (an extra column after the velocities)");
+  EXPECT_EQ(errorOf("t,a,a_vel,g\n0,1,2,3\n1,1,2\n"), "demo.csv:3: wrong column count: 3 cells, the header has 4");
+}

@@ -29,7 +29,7 @@ class KinematicChain
 public:
   /// \brief Chain of `model` from `base` down to `tip`; throws KinematicsError (UnknownLink, NotSerialChain).
   KinematicChain(const RobotModel& model, const std::string& base, const std::string& tip);
-  /// \brief Parses `urdf_xml` (urdfdom + kdl_parser) and builds the chain base to tip.
+  /// \brief Parses `urdf_xml` (urdfdom) and builds the chain base to tip.
   static KinematicChain fromUrdf(const std::string& urdf_xml, const std::string& base, const std::string& tip);
 
   const std::string& baseLink() const { return base_; }

@@ -10,6 +10,7 @@
 #include <vrrw_kinematics/ik_options.h>
 #include <vrrw_kinematics/ik_solver.h>
 #include <vrrw_kinematics/joint_bounds.h>
+#include <vrrw_kinematics/segment_checker.h>
 #include <vrrw_kinematics/state_checker.h>
 #include <vrrw_trajectory/joint_trajectory.h>
 
@@ -83,11 +84,13 @@ public:
   /// \brief Collision state of the group at q (limits not checked).
   Contact check(const Eigen::VectorXd& q) { return checker_.check(q); }
   bool stateValid(const Eigen::VectorXd& q);
-  /// \brief Number of steps the straight segment a-b is checked in.
-  std::size_t segmentSteps(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
-  /// \brief Checks every step of the straight segment a-b (b included, a not); `valid_fraction` is the
-  /// fraction of the segment known valid when it fails.
-  bool segmentValid(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double* valid_fraction = nullptr);
+  /// \brief Number of steps the straight segment a-b is checked in (SegmentChecker::steps).
+  std::size_t segmentSteps(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const { return segments_.steps(a, b); }
+  /// \brief SegmentChecker::valid: every step of the straight segment a-b (b included, a not).
+  bool segmentValid(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double* valid_fraction = nullptr)
+  {
+    return segments_.valid(a, b, valid_fraction);
+  }
   /// \brief True when every segment of `path` is valid.
   bool pathValid(const std::vector<Eigen::VectorXd>& path);
   /// \brief True when the motion between consecutive trajectory samples is valid (blended corners leave
@@ -105,8 +108,7 @@ private:
 
   StateChecker checker_;
   JointBounds bounds_;
-  std::vector<double> reach_;
-  double resolution_;
+  SegmentChecker segments_;
   std::unique_ptr<IkSolver> ik_;
   Eigen::Isometry3d chain_base_pose_ = Eigen::Isometry3d::Identity();
   std::shared_ptr<ompl::base::RealVectorStateSpace> space_;

@@ -40,7 +40,7 @@ struct LinkModel
   std::vector<vrrw_scene::Shape> collision;
 };
 
-/// \brief A whole URDF as a kinematic tree (urdfdom + kdl_parser), links in topological order.
+/// \brief A whole URDF as a kinematic tree (urdfdom), links in topological order.
 ///
 /// Variables are the non-fixed, non-mimic joints in link order; mimic joints follow theirs.
 class RobotModel

@@ -58,6 +58,15 @@ private:
     bool moving = false;
     std::vector<std::pair<int, int>> elements;  ///< (moving element slot, element slot or -1 - static element)
   };
+  /// \brief Construction stages: the group's joints; the anchor (moving frame) of every link; every body's
+  /// elements placed at the frozen state, moving ones relative to their anchor; the static bodies' boxes;
+  /// the checked pairs grouped per body pair, static ones behind a box tree.
+  void readGroup(const std::vector<std::string>& joints);
+  std::vector<int> anchorLinks(const std::vector<Eigen::Isometry3d>& link_poses);
+  void placeBodies(const std::vector<Eigen::Isometry3d>& link_poses, const std::vector<int>& anchor_of,
+                   std::vector<int>& slot_of, std::vector<int>& moving_body_of);
+  void boundStaticBodies();
+  void groupCheckedPairs(const std::vector<int>& slot_of, const std::vector<int>& moving_body_of);
   template <bool kReport>
   bool collide(const Eigen::VectorXd& q, Contact* contact);
   void computeReach();

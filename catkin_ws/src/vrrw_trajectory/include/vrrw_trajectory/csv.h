@@ -16,6 +16,8 @@ namespace vrrw_trajectory
 /// - Row 1 is a header: `t` (or `time`), then the n joint names (positions, rad or m), then the n
 ///   velocity columns named `<joint>_vel` in the same order. The seed's anonymous header
 ///   `t,q1..qn,qd1..qdn` is accepted too (joint names become q1..qn).
+/// - Optionally, named extra columns after the velocities (e.g. `gripper`, as vrrw_demos exports):
+///   read into JointTrajectory::extra_names and JointTrajectory::extras, written back the same way.
 /// - Then one row per sample: time in seconds, strictly increasing; every cell a finite number.
 /// - At least two samples. Blank lines are ignored; cells may carry surrounding spaces; CRLF is fine.
 /// - Written with the shortest decimal that reads back to the identical double.

@@ -18,6 +18,8 @@ struct JointTrajectory
 {
   std::vector<std::string> joint_names;
   std::vector<TrajectoryPoint> points;
+  std::vector<std::string> extra_names;     ///< named values carried beside the joints (CSV columns after the velocities)
+  std::vector<std::vector<double>> extras;  ///< [point][extra]: empty, or one row per point (e.g. the gripper)
 
   double duration() const { return points.empty() ? 0.0 : points.back().time - points.front().time; }
 };

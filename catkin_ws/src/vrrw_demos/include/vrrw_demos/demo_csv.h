@@ -1,0 +1,26 @@
+#pragma once
+#include <string>
+
+#include <vrrw_demos/demonstration.h>
+#include <vrrw_trajectory/joint_trajectory.h>
+
+namespace vrrw_demos
+{
+/// \brief The name of the CSV column after the velocities that holds the gripper's actuated joint.
+constexpr const char* kGripperColumn = "gripper";
+
+/// \brief A track as the project's CSV layout `t, q1..qn, qd1..qdn, gripper` (vrrw_trajectory/csv.h):
+/// one point per recorded state, no resampling. Throws DemoError when the track has no state.
+vrrw_trajectory::JointTrajectory toTrajectory(const RobotTrack& track);
+
+/// \brief The track of robot \a robot from a CSV trajectory; a missing `gripper` column reads as 0.
+/// Throws DemoError naming \a source when a velocity is missing.
+RobotTrack fromTrajectory(const vrrw_trajectory::JointTrajectory& trajectory, const std::string& robot,
+                          const std::string& source);
+
+/// \brief Writes the track to \a path (complete or not at all); never overwrites: an existing file is a DemoError.
+void exportCsv(const RobotTrack& track, const std::string& path);
+
+/// \brief Reads a track from a CSV file; errors are DemoError "FILE:LINE: reason".
+RobotTrack importCsv(const std::string& path, const std::string& robot);
+}  // namespace vrrw_demos

@@ -1,0 +1,141 @@
+#include "segment_report.h"
+
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+#include <vrrw_demos/demo_error.h>
+#include <vrrw_kinematics/kinematic_chain.h>
+#include <vrrw_kinematics/kinematics_error.h>
+#include <vrrw_kinematics/robot_model.h>
+#include <yaml-cpp/yaml.h>
+
+namespace vrrw_demos
+{
+namespace
+{
+/// The TCP pose (x y z qx qy qz qw, world frame) of a state; empty without a URDF or TCP link.
+class TcpPoses
+{
+public:
+  TcpPoses(const BagMetadata& metadata, const RobotTrack& track)
+  {
+    const auto robot = metadata.robots.find(track.robot);
+    if (metadata.robot_description.empty() || robot == metadata.robots.end() || robot->second.tcp_link.empty())
+      return;
+    try
+    {
+      const auto model = vrrw_kinematics::RobotModel::fromUrdf(metadata.robot_description);
+      chain_ = std::make_unique<vrrw_kinematics::KinematicChain>(model, model.links().front().name,
+                                                                 robot->second.tcp_link);
+      for (const std::string& joint : chain_->jointNames())
+      {
+        const auto found = std::find(track.joint_names.begin(), track.joint_names.end(), joint);
+        if (found == track.joint_names.end())
+        {
+          chain_.reset();
+          return;
+        }
+        index_.push_back(static_cast<std::size_t>(found - track.joint_names.begin()));
+      }
+    }
+    catch (const vrrw_kinematics::KinematicsError&)
+    {
+      chain_.reset();
+    }
+  }
+
+  std::vector<double> at(const RobotState& state) const
+  {
+    if (!chain_)
+      return {};
+    Eigen::VectorXd q(static_cast<Eigen::Index>(index_.size()));
+    for (std::size_t j = 0; j < index_.size(); ++j)
+      q[static_cast<Eigen::Index>(j)] = state.positions[index_[j]];
+    const Eigen::Isometry3d pose = chain_->fk(q);
+    const Eigen::Quaterniond rotation(pose.rotation());
+    return { pose.translation().x(), pose.translation().y(), pose.translation().z(),
+             rotation.x(), rotation.y(), rotation.z(), rotation.w() };
+  }
+
+private:
+  std::unique_ptr<vrrw_kinematics::KinematicChain> chain_;
+  std::vector<std::size_t> index_;
+};
+
+std::string fixed(double value, int digits)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", digits, value);
+  return buffer;
+}
+}  // namespace
+
+SegmentReport segmentReport(const std::string& bag, const Demonstration& demo, const BagMetadata& metadata,
+                            const SegmentationOptions& options)
+{
+  YAML::Emitter out;
+  std::ostringstream table;
+  out << YAML::BeginMap << YAML::Key << "bag" << YAML::Value << bag;
+  out << YAML::Key << "thresholds" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "still_speed" << YAML::Value << options.still_speed;
+  out << YAML::Key << "rest_speed" << YAML::Value << options.rest_speed;
+  out << YAML::Key << "min_still" << YAML::Value << options.min_still;
+  out << YAML::Key << "gripper_speed" << YAML::Value << options.gripper_speed << YAML::EndMap;
+  out << YAML::Key << "robots" << YAML::Value << YAML::BeginMap;
+  for (const RobotTrack& track : demo.robots)
+  {
+    const Segmentation segmentation = segmentPickPlace(track, demo, options);
+    const TcpPoses tcp(metadata, track);
+    out << YAML::Key << track.robot << YAML::Value << YAML::BeginMap << YAML::Key << "segments" << YAML::Value
+        << YAML::BeginSeq;
+    table << "robot " << track.robot << "\n  instruction          start      end  object     tcp at end (x y z, m)\n";
+    for (const Segment& segment : segmentation.segments)
+    {
+      const auto start_pose = tcp.at(stateAt(track, segment.start));
+      const auto end_pose = tcp.at(stateAt(track, segment.end));
+      out << YAML::BeginMap << YAML::Key << "name" << YAML::Value << segment.name;
+      out << YAML::Key << "kind" << YAML::Value << (segment.gripper ? "gripper" : "arm");
+      out << YAML::Key << "start" << YAML::Value << segment.start << YAML::Key << "end" << YAML::Value << segment.end;
+      out << YAML::Key << "object" << YAML::Value << segment.object;
+      if (segment.gripper)
+        out << YAML::Key << "gripper_target" << YAML::Value << segment.gripper_target;
+      if (!start_pose.empty())
+        out << YAML::Key << "tcp_start" << YAML::Value << YAML::Flow << start_pose << YAML::Key << "tcp_end"
+            << YAML::Value << YAML::Flow << end_pose;
+      out << YAML::EndMap;
+      char line[160];
+      std::snprintf(line, sizeof(line), "  %-18s %7.3f  %7.3f  %-10s", segment.name.c_str(), segment.start,
+                    segment.end, segment.object.empty() ? "-" : segment.object.c_str());
+      table << line;
+      if (!end_pose.empty())
+        table << " " << fixed(end_pose[0], 3) << " " << fixed(end_pose[1], 3) << " " << fixed(end_pose[2], 3);
+      table << "\n";
+    }
+    out << YAML::EndSeq << YAML::Key << "warnings" << YAML::Value << YAML::BeginSeq;
+    for (const std::string& warning : segmentation.warnings)
+    {
+      out << warning;
+      table << "  warning: " << warning << "\n";
+    }
+    out << YAML::EndSeq << YAML::EndMap;
+  }
+  out << YAML::EndMap << YAML::EndMap;
+  return { std::string(out.c_str()) + "\n", table.str() };
+}
+
+Segment findSegment(const std::string& bag, const Demonstration& demo, const RobotTrack& track,
+                    const std::string& name)
+{
+  const Segmentation segmentation = segmentPickPlace(track, demo);
+  std::string found;
+  for (const Segment& segment : segmentation.segments)
+  {
+    if (segment.name == name)
+      return segment;
+    found += (found.empty() ? "" : ", ") + segment.name;
+  }
+  throw DemoError(bag + ": robot '" + track.robot + "' has no segment '" + name + "' (found: " +
+                  (found.empty() ? "none" : found) + ")");
+}
+}  // namespace vrrw_demos

@@ -1,0 +1,25 @@
+#pragma once
+#include <string>
+
+#include <vrrw_demos/demonstration.h>
+#include <vrrw_demos/segmentation.h>
+
+#include "bag_demo.h"
+
+namespace vrrw_demos
+{
+/// \brief Segments every robot of a demonstration and renders YAML (with TCP poses at the boundaries,
+/// by forward kinematics of the bag's URDF when it has one) and a table for the terminal.
+struct SegmentReport
+{
+  std::string yaml;
+  std::string table;
+};
+
+SegmentReport segmentReport(const std::string& bag, const Demonstration& demo, const BagMetadata& metadata,
+                            const SegmentationOptions& options);
+
+/// \brief The named segment of a robot, by segmentPickPlace; throws DemoError listing the ones found.
+Segment findSegment(const std::string& bag, const Demonstration& demo, const RobotTrack& track,
+                    const std::string& name);
+}  // namespace vrrw_demos
