@@ -21,6 +21,9 @@ namespace
 {
 void openBag(rosbag::Bag& bag, const std::string& path)
 {
+  struct stat info;
+  if (::stat(path.c_str(), &info) != 0)
+    throw DemoError(path + ": no such file");
   try
   {
     bag.open(path, rosbag::bagmode::Read);

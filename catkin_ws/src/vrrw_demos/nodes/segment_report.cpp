@@ -77,6 +77,8 @@ SegmentReport segmentReport(const std::string& bag, const Demonstration& demo, c
   YAML::Emitter out;
   std::ostringstream table;
   out << YAML::BeginMap << YAML::Key << "bag" << YAML::Value << bag;
+  out << YAML::Key << "start_stamp" << YAML::Value << YAML::Precision(19) << demo.start_stamp
+      << YAML::Comment("s since the epoch; segment times are seconds after it");
   out << YAML::Key << "thresholds" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "still_speed" << YAML::Value << options.still_speed;
   out << YAML::Key << "rest_speed" << YAML::Value << options.rest_speed;

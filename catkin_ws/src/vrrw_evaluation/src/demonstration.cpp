@@ -43,7 +43,7 @@ JointTrajectory slice(const JointTrajectory& trajectory, double start, double en
   out.joint_names = trajectory.joint_names;
   out.points.push_back({ 0.0, positionsAt(trajectory, start), {}, {} });
   for (const TrajectoryPoint& p : trajectory.points)
-    if (p.time > start + 1e-9 && p.time < end - 1e-9)
+    if (p.time > start + kEndGap && p.time < end - kEndGap)
       out.points.push_back({ p.time - start, p.positions, p.velocities, {} });
   out.points.push_back({ end - start, positionsAt(trajectory, end), {}, {} });
   if (end - start <= 0.0 || out.points.size() < 3)

@@ -35,6 +35,11 @@ TEST(Demonstration, SliceRebasesAndInterpolatesItsEnds)
   const auto expected = positionsAt(demo.arm, 0.505);
   EXPECT_NEAR(part.points.front().positions[0], expected[0], 1e-15);
   EXPECT_NEAR(expected[0], 0.5 * (positionsAt(demo.arm, 0.50)[0] + positionsAt(demo.arm, 0.51)[0]), 1e-15);
+  // A recorded sample 0.1 ms after the start is left out: no near-zero interval in a goal.
+  const auto close = slice(demo.arm, 0.4999, 0.8);
+  EXPECT_NEAR(close.points[1].time, 0.0101, 1e-9);
+  for (std::size_t k = 1; k < close.points.size(); ++k)
+    EXPECT_GE(close.points[k].time - close.points[k - 1].time, kEndGap - 1e-12);
   EXPECT_THROW(slice(demo.arm, 1.0, 1.0), std::invalid_argument);
   EXPECT_THROW(demo.segment("open_gripper"), std::invalid_argument);
 }

@@ -268,7 +268,8 @@ void FreeDrive::tick()
       sphere.lifetime = ros::Duration(0.5);
       markers.markers.push_back(sphere);
     }
-    hand_markers_.publish(markers);
+    if (!markers.markers.empty())  // (recordings keep /operator/*: no empty arrays at 20 Hz)
+      hand_markers_.publish(markers);
     if (!mouse_)
       return;
     for (auto& [robot, arm] : arms_)

@@ -136,7 +136,8 @@ def main():
 
     workdir = tempfile.mkdtemp(prefix='vrrw_render_')
     config = os.path.join(workdir, 'render.rviz')
-    render_config(config, args.width, args.height, set(args.hide))
+    # without the interaction node there are no ghost frames: rviz would pile every ghost link at the origin
+    render_config(config, args.width, args.height, set(args.hide) | (set() if args.ghost else {'Ghosts'}))
     display = free_display()
     env = dict(os.environ, DISPLAY=f':{display}', ROS_MASTER_URI=f'http://127.0.0.1:{free_port()}')
     os.environ.update(env)

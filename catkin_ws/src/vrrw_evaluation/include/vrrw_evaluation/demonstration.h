@@ -27,8 +27,13 @@ struct Demonstration
   const Segment& segment(const std::string& name) const;
 };
 
-/// \brief The samples of `trajectory` in [start, end] (and the two bracketing ones interpolated at the
-/// ends), times rebased to 0. Throws std::invalid_argument when fewer than 2 samples remain.
+/// s: slice() leaves out recorded samples this close to its ends (the interpolated end stands for them), so
+/// a goal made from it has no near-zero interval (a stamp 0.1 ms after the start would ask for any speed).
+constexpr double kEndGap = 0.005;
+
+/// \brief The samples of `trajectory` in (start, end) at least kEndGap from both, with the positions at start
+/// and end interpolated as first and last point, times rebased to 0. Throws std::invalid_argument when fewer
+/// than 3 points result.
 vrrw_trajectory::JointTrajectory slice(const vrrw_trajectory::JointTrajectory& trajectory, double start, double end);
 /// \brief Positions at time t, linearly interpolated, clamped to the ends.
 std::vector<double> positionsAt(const vrrw_trajectory::JointTrajectory& trajectory, double t);
