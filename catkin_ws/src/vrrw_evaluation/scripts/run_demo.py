@@ -114,8 +114,11 @@ def main():
     # boundaries and controller timing on one clock that advances with the physics steps.
     launch = os.path.join(workdir, 'demo.launch')
     with open(launch, 'w') as f:
+        # vrrw_demos' recorder writes the demonstration's bag when it is built (demo_runner's own otherwise).
+        recorder = '  <include file="$(find vrrw_demos)/launch/recorder.launch"/>\n' if subprocess.run(
+            ['rospack', 'find', 'vrrw_demos'], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode == 0 else ''
         f.write(f'<launch>\n  <param name="/use_sim_time" value="true"/>\n  <include file="{args.launch}"/>\n'
-                '  <param name="/physics/publish_clock" value="true"/>\n</launch>\n')
+                f'  <param name="/physics/publish_clock" value="true"/>\n{recorder}</launch>\n')
     demo_config(config)
     # VRRW_DISPLAY / VRRW_ROS_PORT pin the display and the master's port (parallel runs on one machine).
     display = int(os.environ.get('VRRW_DISPLAY') or render_scene.free_display())

@@ -197,8 +197,9 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   report.message_counts["/" + client_.robot().name + "/joint_states"] = recording.joint_state_messages;
   report.message_counts["/physics/contacts"] = recording.contact_messages;
   report.message_counts["/demos/events"] = recording.event_messages;
-  report.bag_messages = recording.joint_state_messages + recording.contact_messages + recording.event_messages;
+  report.bag_messages = recording.bag_messages;
   report.bag_file = recording.bag_file;
+  report.teach_source += "; bag by " + recording.recorder;
   if (!recording.arm_contacts.empty())
     progress("warning: the demonstration touched " + *recording.arm_contacts.begin());
   return true;

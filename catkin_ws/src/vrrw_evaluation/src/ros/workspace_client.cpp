@@ -1,7 +1,11 @@
 #include "workspace_client.h"
 
 #include <tf2_eigen/tf2_eigen.h>
+#include <cstdio>
 #include <vrrw_msgs/ComputeIK.h>
+#include <vrrw_msgs/DemoAnnotate.h>
+#include <vrrw_msgs/DemoStart.h>
+#include <vrrw_msgs/DemoStop.h>
 #include <vrrw_msgs/Event.h>
 #include <vrrw_msgs/Plan.h>
 #include <vrrw_physics/SetObjectPose.h>
@@ -48,6 +52,9 @@ WorkspaceClient::WorkspaceClient(ros::NodeHandle& node, const vrrw_scene::Robot&
   ik_ = node.serviceClient<vrrw_msgs::ComputeIK>("/" + robot.name + "/compute_ik");
   plan_ = node.serviceClient<vrrw_msgs::Plan>("/" + robot.name + "/plan");
   place_ = node.serviceClient<vrrw_physics::SetObjectPose>("/physics/set_object_pose");
+  demos_start_ = node.serviceClient<vrrw_msgs::DemoStart>("/demos/start");
+  demos_stop_ = node.serviceClient<vrrw_msgs::DemoStop>("/demos/stop");
+  demos_annotate_ = node.serviceClient<vrrw_msgs::DemoAnnotate>("/demos/annotate");
   joint_states_ = node.subscribe("/" + robot.name + "/joint_states", 1000, &WorkspaceClient::onJointStates, this);
   contacts_ = node.subscribe("/physics/contacts", 100, &WorkspaceClient::onContacts, this);
   track_timer_ = node.createTimer(ros::Duration(0.05), &WorkspaceClient::onTrackTimer, this);
@@ -198,13 +205,26 @@ bool WorkspaceClient::placeObject(const Eigen::Isometry3d& pose, std::string& er
 
 void WorkspaceClient::startRecording(const std::string& bag_file)
 {
+  demos_recording_ = false;
+  if (!bag_file.empty())
+  {
+    std::remove(bag_file.c_str());  // the report's own bag of an earlier run (vrrw_demos never overwrites)
+    vrrw_msgs::DemoStart start;
+    start.request.file = bag_file;
+    start.request.robots = { robot_.name };
+    const bool recorder = demos_start_.waitForExistence(ros::Duration(3.0));
+    demos_recording_ = recorder && demos_start_.call(start) && start.response.success;
+    if (recorder && !demos_recording_)
+      ROS_WARN_STREAM("/demos/start: " << start.response.message << "; recording with demo_runner's own bag");
+  }
   std::lock_guard<std::mutex> lock(mutex_);
   recording_data_ = Recording();
-  if (!bag_file.empty())
+  recording_data_.bag_file = bag_file;
+  recording_data_.recorder = demos_recording_ ? "vrrw_demos recorder_node" : "demo_runner";
+  if (!bag_file.empty() && !demos_recording_)
   {
     bag_.open(bag_file, rosbag::bagmode::Write);
     bag_open_ = true;
-    recording_data_.bag_file = bag_file;
   }
   recording_data_.arm.joint_names = robot_.arm_joints;
   record_start_ = ros::Time::now();
@@ -213,11 +233,26 @@ void WorkspaceClient::startRecording(const std::string& bag_file)
 
 Recording WorkspaceClient::stopRecording()
 {
+  std::uint64_t demos_messages = 0;
+  if (demos_recording_)
+  {
+    vrrw_msgs::DemoStop stop;
+    if (demos_stop_.call(stop) && stop.response.success)
+      demos_messages = stop.response.messages;
+    else
+      ROS_WARN_STREAM("/demos/stop: " << stop.response.message);
+    demos_recording_ = false;
+  }
   std::lock_guard<std::mutex> lock(mutex_);
   recording_ = false;
+  recording_data_.bag_messages = demos_messages;
   recording_data_.seconds = (ros::Time::now() - record_start_).toSec();
   if (bag_open_)
+  {
+    recording_data_.bag_messages =
+        recording_data_.joint_state_messages + recording_data_.contact_messages + recording_data_.event_messages;
     bag_.close();
+  }
   bag_open_ = false;
   return std::move(recording_data_);
 }
@@ -230,10 +265,18 @@ void WorkspaceClient::annotate(const std::string& kind, const std::string& detai
   event.robot = robot_.name;
   event.kind = kind;
   event.detail = detail;
+  if (demos_recording_)
+  {
+    vrrw_msgs::DemoAnnotate annotate;
+    annotate.request.text = kind + " " + detail;
+    demos_annotate_.call(annotate);
+  }
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!recording_ || !bag_open_)
+  if (!recording_)
     return;
   ++recording_data_.event_messages;
+  if (!bag_open_)
+    return;
   bag_.write("/demos/events", event.header.stamp, event);
 }
 

@@ -36,6 +36,8 @@ struct Recording
   std::uint64_t contact_messages = 0;
   std::uint64_t event_messages = 0;
   std::string bag_file;  ///< the bag written beside, empty: none
+  std::string recorder;  ///< who wrote it: "vrrw_demos recorder_node" or "demo_runner"
+  std::uint64_t bag_messages = 0;  ///< messages in the bag
   double seconds = 0.0;  ///< wall
 };
 
@@ -65,7 +67,9 @@ public:
   /// \brief /physics/set_object_pose, then waits until tf shows the object there.
   bool placeObject(const Eigen::Isometry3d& pose, std::string& error);
 
-  /// \brief Starts recording; with `bag_file` also into that bag (joint_states, contacts, events).
+  /// \brief Starts recording; with `bag_file` also into that bag: through vrrw_demos' /demos/start when a
+  /// recorder node runs (everything the workspace publishes), else this client's own (joint_states,
+  /// contacts, events). An existing `bag_file` is replaced.
   void startRecording(const std::string& bag_file = "");
   Recording stopRecording();
   /// \brief An event (vrrw_msgs/Event on /demos/events in the bag): `kind` one word, `detail` one line.
@@ -91,7 +95,8 @@ private:
   tf2_ros::TransformListener tf_listener_;
   actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> arm_;
   actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper_;
-  ros::ServiceClient ik_, plan_, place_;
+  ros::ServiceClient ik_, plan_, place_, demos_start_, demos_stop_, demos_annotate_;
+  bool demos_recording_ = false;
   ros::Subscriber joint_states_, contacts_;
   ros::Timer track_timer_;
 
