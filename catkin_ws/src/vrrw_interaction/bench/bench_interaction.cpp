@@ -108,6 +108,7 @@ int main(int argc, char** argv)
 {
   int samples = 1000;
   double hold = 5.0;
+  std::string angular_stiffness = "500", angular_damping = "5";  // the node's defaults
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string flag = argv[i];
@@ -115,8 +116,11 @@ int main(int argc, char** argv)
       samples = std::atoi(argv[i + 1]);
     else if (flag == "--hold")
       hold = std::atof(argv[i + 1]);
+    else if (flag == "--angular")  // K,D of a grip on a link (0,0: position only, as before issue 13)
+      angular_stiffness = std::string(argv[i + 1]).substr(0, std::string(argv[i + 1]).find(',')),
+      angular_damping = std::string(argv[i + 1]).substr(std::string(argv[i + 1]).find(',') + 1);
     else
-      return std::cerr << "bench interaction: unknown option " << flag << " (--samples N, --hold S)\n", 2;
+      return std::cerr << "bench interaction: unknown option " << flag << " (--samples N, --hold S, --angular K,D)\n", 2;
   }
   const int port = freePort();
   const std::string master = "http://127.0.0.1:" + std::to_string(port);
@@ -128,7 +132,8 @@ int main(int argc, char** argv)
     setsid();
     if (!freopen(log.c_str(), "w", stdout) || !freopen(log.c_str(), "a", stderr))
       _exit(127);
-    execlp("roslaunch", "roslaunch", "-p", std::to_string(port).c_str(), LAUNCH_FILE, (char*)nullptr);
+    const std::string k = "grip_angular_stiffness:=" + angular_stiffness, d = "grip_angular_damping:=" + angular_damping;
+    execlp("roslaunch", "roslaunch", "-p", std::to_string(port).c_str(), LAUNCH_FILE, k.c_str(), d.c_str(), (char*)nullptr);
     _exit(127);
   }
   std::cerr << "bench interaction: physics cell of pick_place_drill on " << master << " (log " << log << ")\n";
@@ -161,7 +166,9 @@ int main(int argc, char** argv)
                 << ", \"marker_answered\": " << answered << ", \"marker_median_ms\": " << percentile(ms, 0.5)
                 << ", \"marker_p99_ms\": " << percentile(ms, 0.99) << ", \"marker_max_ms\": " << percentile(ms, 1.0)
                 << ", \"drag_body\": \"" << drag.body << "\", \"drag_rms_m\": " << drag.rms
-                << ", \"drag_max_m\": " << drag.max << ", \"drift_m\": " << drag.drift << ", \"drift_seconds\": " << hold
+                << ", \"drag_max_m\": " << drag.max << ", \"drag_angle_rms_deg\": " << drag.angle_rms
+                << ", \"drag_angle_max_deg\": " << drag.angle_max << ", \"grip_angular\": \"" << angular_stiffness << ","
+                << angular_damping << "\", \"drift_m\": " << drag.drift << ", \"drift_seconds\": " << hold
                 << ", \"drag_error\": \"" << drag.error << "\"}" << std::endl;
       status = drag.error.empty() ? 0 : 1;
     }

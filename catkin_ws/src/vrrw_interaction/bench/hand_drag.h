@@ -19,13 +19,17 @@ struct DragFigures
   std::string error;           ///< "" when the drag ran
   std::string body;            ///< what the hand took
   double rms = 0.0, max = 0.0;  ///< m, grabbed point vs hand target while moving
+  /// deg, the grabbed link's orientation vs its orientation at the grab turned as the hand turned, while moving
+  double angle_rms = 0.0, angle_max = 0.0;
   double drift = 0.0;          ///< m of the grabbed point over `hold` s after release with rigid drives
   int samples = 0;
 };
 
 /// \brief Free-drive on, a hand closes on the wrist, moves `distance` m along +y at `speed` m/s, opens;
-/// free-drive off; the grabbed point is watched for `hold` s.
-inline DragFigures dragWrist(ros::NodeHandle& nh, tf2_ros::Buffer& tf, double distance, double speed, double hold)
+/// free-drive off; the grabbed point is watched for `hold` s. With `turn` (rad) the hand also turns that much
+/// about the world z axis (through itself) while it moves.
+inline DragFigures dragWrist(ros::NodeHandle& nh, tf2_ros::Buffer& tf, double distance, double speed, double hold,
+                             double turn = 0.0)
 {
   DragFigures out;
   std::mutex mutex;
@@ -81,24 +85,33 @@ inline DragFigures dragWrist(ros::NodeHandle& nh, tf2_ros::Buffer& tf, double di
   }
   if (out.body.empty())
     return out.error = "no grab event", out;
-  const Eigen::Vector3d point = linkPose(out.body).inverse() * grabbed_world;
+  const Eigen::Isometry3d link_at_grab = linkPose(out.body);
+  const Eigen::Vector3d point = link_at_grab.inverse() * grabbed_world;
   const Eigen::Vector3d start = hand.translation();
   const int steps = static_cast<int>(distance / speed * 100.0);
-  double sum = 0.0;
+  double sum = 0.0, angle_sum = 0.0;
   ros::WallTime tick = ros::WallTime::now();
   for (int i = 1; i <= steps + 50; ++i)  // 100 Hz; then half a second at the end point
   {
+    const Eigen::AngleAxisd turned(turn * std::min(1.0, double(i) / steps), Eigen::Vector3d::UnitZ());
     hand.translation() = start + Eigen::Vector3d(0, distance * std::min(1.0, double(i) / steps), 0);
+    hand.linear() = turned.toRotationMatrix();
     send();
     tick += ros::WallDuration(0.01);
     if (const ros::WallDuration rest = tick - ros::WallTime::now(); rest > ros::WallDuration(0))
       rest.sleep();  // a negative WallDuration would sleep for ever
     if (i > steps)
       continue;
-    const double error = (linkPose(out.body) * point - (grabbed_world + (hand.translation() - start))).norm();
+    const Eigen::Isometry3d link = linkPose(out.body);
+    const Eigen::Vector3d target = start + turned * (grabbed_world - start) + (hand.translation() - start);
+    const double error = (link * point - target).norm();
+    const double angle =
+        Eigen::AngleAxisd(link.rotation() * (turned * link_at_grab.rotation()).transpose()).angle() * 180.0 / M_PI;
     sum += error * error, out.max = std::max(out.max, error), ++out.samples;
+    angle_sum += angle * angle, out.angle_max = std::max(out.angle_max, angle);
   }
   out.rms = std::sqrt(sum / out.samples);
+  out.angle_rms = std::sqrt(angle_sum / out.samples);
   grip.data = 0.0;
   grip_pub.publish(grip);
   ros::WallDuration(0.1).sleep();

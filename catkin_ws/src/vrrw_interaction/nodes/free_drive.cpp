@@ -21,8 +21,13 @@ std::string describe(const Eigen::Vector3d& p)
 }
 }  // namespace
 
-FreeDrive::FreeDrive(WorldView& view, std::vector<GhostInterface*> arms, double grab_distance, double hand_radius)
-  : view_(view), grab_distance_(grab_distance), hand_radius_(hand_radius)
+FreeDrive::FreeDrive(WorldView& view, std::vector<GhostInterface*> arms, double grab_distance, double hand_radius,
+                     double angular_stiffness, double angular_damping)
+  : view_(view)
+  , grab_distance_(grab_distance)
+  , hand_radius_(hand_radius)
+  , angular_stiffness_(angular_stiffness)
+  , angular_damping_(angular_damping)
 {
   ros::NodeHandle nh;
   for (GhostInterface* arm : arms)
@@ -174,7 +179,14 @@ void FreeDrive::grab(Tracker& tracker)
                                   grab_distance_, grabbable);
   if (!target)
     return;
-  if (physics && !spring("hand_" + tracker.hand.id(), target->body, target->point_in_body, target->point_in_world, false))
+  // a link is held by position and orientation (the link's own now: no pull at the grab), an object by position
+  const bool link = !target->object;
+  tracker.link_at_grab = link ? view_.world().model().relativeTransform(
+                                    view_.liveState(), view_.world().model().links()[0].name, target->body)
+                              : Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d at = tracker.link_at_grab;
+  at.translation() = target->point_in_world;
+  if (physics && !spring("hand_" + tracker.hand.id(), target->body, target->point_in_body, at, link, false))
     return;
   tracker.hand.hold(*target);
   publishHand(tracker, 0.0);
@@ -192,7 +204,7 @@ void FreeDrive::release(Tracker& tracker, const std::string& why)
   const GrabTarget held = *tracker.hand.held();
   tracker.hand.release();
   if (view_.mode() == "physics")
-    spring("hand_" + tracker.hand.id(), held.body, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), true);
+    spring("hand_" + tracker.hand.id(), held.body, Eigen::Vector3d::Zero(), Eigen::Isometry3d::Identity(), false, true);
   view_.event(held.robot, "release", "hand " + tracker.hand.id() + " released " + held.body + " (" + why + ")");
 }
 
@@ -204,7 +216,7 @@ void FreeDrive::follow(Tracker& tracker)
     vrrw_physics::SpringTarget msg;
     msg.id = "hand_" + tracker.hand.id();
     msg.target.position = tf2::toMsg(Eigen::Vector3d(tracker.hand.heldPointTarget()));
-    msg.target.orientation.w = 1.0;
+    msg.target.orientation = tf2::toMsg(Eigen::Quaterniond(tracker.hand.carried(tracker.link_at_grab).rotation()));
     spring_target_.publish(msg);
     return;
   }
@@ -314,7 +326,7 @@ void FreeDrive::onMouse(const visualization_msgs::InteractiveMarkerFeedbackConst
   }
   if (f->event_type == F::MOUSE_DOWN && !dragging_.count(id))
   {
-    if (spring(id, tcp, Eigen::Vector3d::Zero(), target, false))
+    if (spring(id, tcp, Eigen::Vector3d::Zero(), Eigen::Translation3d(target) * Eigen::Isometry3d::Identity(), false, false))
       dragging_.insert(id), view_.event(f->marker_name, "grab", "mouse grabbed " + tcp);
   }
   else if (f->event_type == F::POSE_UPDATE && dragging_.count(id))
@@ -327,22 +339,23 @@ void FreeDrive::onMouse(const visualization_msgs::InteractiveMarkerFeedbackConst
   }
   else if (f->event_type == F::MOUSE_UP && dragging_.count(id))
   {
-    spring(id, tcp, Eigen::Vector3d::Zero(), target, true);
+    spring(id, tcp, Eigen::Vector3d::Zero(), Eigen::Isometry3d::Identity(), false, true);
     dragging_.erase(id);
     view_.event(f->marker_name, "release", "mouse released " + tcp);
   }
 }
 
 bool FreeDrive::spring(const std::string& id, const std::string& body, const Eigen::Vector3d& point,
-                       const Eigen::Vector3d& target, bool release)
+                       const Eigen::Isometry3d& target, bool angular, bool release)
 {
   vrrw_physics::SetSpring srv;  // the recommended gains (physics' defaults): 5000 N/m, 100 N s/m, 200 N
   srv.request.id = id;
   srv.request.body = body;
   srv.request.point = tf2::toMsg(point);
-  srv.request.target.position = tf2::toMsg(target);
-  srv.request.target.orientation.w = 1.0;
+  srv.request.target = tf2::toMsg(target);
   srv.request.stiffness = 5000.0, srv.request.damping = 100.0, srv.request.max_force = 200.0;
+  if (angular)  // see the README: the wrist holds its orientation within 2 deg over the drag benchmark
+    srv.request.angular_stiffness = angular_stiffness_, srv.request.angular_damping = angular_damping_;
   srv.request.release = release;
   if (set_spring_.call(srv) && srv.response.success)
     return true;

@@ -21,7 +21,9 @@ namespace vrrw_interaction
 class FreeDrive
 {
 public:
-  FreeDrive(WorldView& view, std::vector<GhostInterface*> arms, double grab_distance, double hand_radius);
+  /// \brief `angular_*`: N m/rad and N m s/rad of a hand's grip on a link (0: the link's orientation is free).
+  FreeDrive(WorldView& view, std::vector<GhostInterface*> arms, double grab_distance, double hand_radius,
+            double angular_stiffness, double angular_damping);
   /// \brief Free-drive of `robot` on or off; "" or why not.
   std::string set(const std::string& robot, bool on);
 
@@ -32,6 +34,7 @@ private:
     Hand hand;
     ros::Subscriber pose, grip;
     Eigen::Isometry3d tcp_at_grab = Eigen::Isometry3d::Identity();  ///< fake mode: the held arm's TCP
+    Eigen::Isometry3d link_at_grab = Eigen::Isometry3d::Identity();  ///< the held link (physics: its orientation)
     bool pushes = false;       ///< physics: the open hand is a sphere (off until clear of what it let go)
     ros::WallTime last_command;
   };
@@ -44,12 +47,14 @@ private:
   void publishHand(const Tracker& tracker, double radius);
   void tick();
   void onMouse(const visualization_msgs::InteractiveMarkerFeedbackConstPtr& feedback);
+  /// \brief /physics/set_spring: `point` (body frame) pulled to `target`; with `angular`, the body's
+  /// orientation to target's rotation too (a hand's grip on a link carries its rotation).
   bool spring(const std::string& id, const std::string& body, const Eigen::Vector3d& point,
-              const Eigen::Vector3d& target, bool release);
+              const Eigen::Isometry3d& target, bool angular, bool release);
 
   WorldView& view_;
   std::map<std::string, GhostInterface*> arms_;
-  double grab_distance_, hand_radius_;
+  double grab_distance_, hand_radius_, angular_stiffness_, angular_damping_;
   std::set<std::string> active_;
   std::map<std::string, std::unique_ptr<Tracker>> trackers_;
   std::map<std::string, ros::Publisher> active_pubs_, commands_;

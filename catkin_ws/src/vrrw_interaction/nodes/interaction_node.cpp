@@ -55,7 +55,9 @@ int main(int argc, char** argv)
       ROS_ERROR_STREAM("robot " << name << ": " << e.what() << " (no ghost for it)");
     }
   }
-  FreeDrive free_drive(view, arms, pnh.param("grab_distance", 0.05), pnh.param("hand_radius", 0.04));
+  // a grip on a link carries its orientation too (README: the wrist within 2 deg over the drag benchmark)
+  FreeDrive free_drive(view, arms, pnh.param("grab_distance", 0.05), pnh.param("hand_radius", 0.04),
+                       pnh.param("grip_angular_stiffness", 500.0), pnh.param("grip_angular_damping", 5.0));
   GhostMarkers markers(view, arms, marker_rate, max_jump,
                        [&free_drive](const std::string& robot, bool on) {
                          if (const std::string error = free_drive.set(robot, on); !error.empty())

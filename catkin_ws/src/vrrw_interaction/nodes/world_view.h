@@ -1,6 +1,7 @@
 #pragma once
 #include <Eigen/Geometry>
 #include <geometry_msgs/PoseStamped.h>
+#include <map>
 #include <mutex>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
@@ -9,6 +10,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 #include <vrrw_kinematics/collision_world.h>
+#include <vrrw_physics/Contacts.h>
 #include <vrrw_scene/scene.h>
 
 namespace vrrw_interaction
@@ -37,8 +39,24 @@ public:
   void event(const std::string& robot, const std::string& kind, const std::string& detail);
 
 private:
+  /// \brief An object a gripper holds: attached to the TCP link; `supports` are the fixed objects it rested
+  /// on when taken (allowed until it is lifted 1 cm clear, so a plan may start at the grasp).
+  struct Held
+  {
+    std::string robot;
+    std::vector<std::string> supports;
+    std::vector<std::string> restore;  ///< fixed objects the ACM let it touch while free (allowed again on release)
+    Eigen::Vector3d taken_at = Eigen::Vector3d::Zero();  ///< the object's position when attached
+    double last_seen = 0.0;  ///< wall time the holding rule last held
+  };
   void onJointStates(const sensor_msgs::JointState& msg);
+  void onContacts(const vrrw_physics::Contacts& msg);
   void refreshObjects();
+  /// \brief Fake mode's rule: the gripper more than 30 % closed and its TCP within 1 cm of the object.
+  bool fakeHolds(const vrrw_scene::Robot& robot, const std::string& object) const;
+  /// \brief Attaches or (after 0.3 s without the rule) detaches; events "attach"/"detach".
+  void updateHeld(const std::string& object, const std::string& robot, double now);
+  void releaseSupports(const std::string& object, Held& held, bool all);
 
   vrrw_scene::Scene scene_;
   vrrw_kinematics::CollisionWorld world_;
@@ -48,7 +66,9 @@ private:
   tf2_ros::Buffer tf_;
   tf2_ros::TransformListener listener_;
   tf2_ros::TransformBroadcaster broadcaster_;
-  ros::Subscriber joint_states_;
+  std::map<std::string, Held> held_;                          ///< by object
+  std::map<std::string, std::vector<std::string>> gripper_links_;  ///< by robot: the links below its flange
+  ros::Subscriber joint_states_, contacts_;
   ros::Publisher events_;
   ros::Timer objects_timer_;
 };

@@ -1,9 +1,15 @@
 // Node test (rostest, real master, real Bullet physics): a scripted hand drags the free-driven UR5e's
-// wrist 20 cm at 0.2 m/s; releasing with rigid drives freezes it; a ghost plan executes within tolerance.
+// wrist 20 cm at 0.2 m/s; releasing with rigid drives freezes it; a ghost plan executes within tolerance;
+// a turning hand turns the wrist; a drill taken by the gripper is attached to the ghost's TCP and planned with.
+#include <actionlib/client/simple_action_client.h>
+#include <control_msgs/GripperCommandAction.h>
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
 #include <vrrw_msgs/GhostExecute.h>
 #include <vrrw_msgs/GhostPlan.h>
 #include <vrrw_msgs/GhostPreset.h>
+#include <vrrw_msgs/GhostSetPose.h>
+#include <std_srvs/Trigger.h>
+#include <vrrw_physics/SetObjectPose.h>
 
 #include "../bench/hand_drag.h"
 #include "interaction_fixture.h"
@@ -102,6 +108,122 @@ TEST(InteractionPhysics, TheMouseMarkerPullsTheTcp)
   std::cout << "mouse pulled the TCP " << moved.transpose() << " m\n";
   EXPECT_NEAR(moved.y(), -0.1, 0.02);
   ASSERT_TRUE(call<std_srvs::SetBool>("/ur5e/free_drive").response.success);
+}
+
+TEST(InteractionPhysics, AGripOnTheWristCarriesTheHandsRotation)
+{
+  const auto figures = vrrw_interaction_bench::dragWrist(*nh, *tf, 0.1, 0.1, 0.5, 0.5);  // 10 cm in 1 s, turning 29 deg
+  ASSERT_EQ(figures.error, "");
+  std::cout << "turning drag of " << figures.body << ": rms " << figures.rms << " m, orientation error rms "
+            << figures.angle_rms << " deg, max " << figures.angle_max << " deg\n";
+  EXPECT_LT(figures.rms, 0.02);
+  EXPECT_LT(figures.angle_max, 4.0);
+}
+
+namespace
+{
+/// The TCP over the drill's housing, fingers across it (vrrw_evaluation's grasp), `above` m higher.
+Eigen::Isometry3d tcpOverDrill(const Eigen::Isometry3d& drill, double above)
+{
+  Eigen::Matrix3d tool;
+  tool.col(2) = -Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d across = drill.rotation().col(1);
+  across.z() = 0.0;
+  tool.col(1) = across.normalized();
+  tool.col(0) = tool.col(1).cross(tool.col(2));
+  Eigen::Isometry3d tcp = Eigen::Isometry3d::Identity();
+  tcp.linear() = tool;
+  tcp.translation() = drill * Eigen::Vector3d(0.03, 0.0, 0.203) + Eigen::Vector3d(0, 0, above);
+  return tcp;
+}
+
+vrrw_msgs::GhostSetPose ghostTo(const Eigen::Isometry3d& tcp)
+{
+  vrrw_msgs::GhostSetPose srv;
+  srv.request.pose.header.frame_id = "world";
+  srv.request.pose.pose = tf2::toMsg(tcp);
+  return call("/ur5e/ghost/set_pose", srv);
+}
+
+std::string moveTo(const Eigen::Isometry3d& tcp, trajectory_msgs::JointTrajectory* planned = nullptr)
+{
+  if (const auto set = ghostTo(tcp); !set.response.success)
+    return "set_pose: " + set.response.message;
+  const auto plan = call<vrrw_msgs::GhostPlan>("/ur5e/ghost/plan");
+  if (!plan.response.success)
+    return "plan: " + plan.response.message;
+  if (planned)
+    *planned = plan.response.trajectory;
+  const auto execute = call<vrrw_msgs::GhostExecute>("/ur5e/ghost/execute");
+  return execute.response.success ? "" : "execute: " + execute.response.message + " " + execute.response.error_string;
+}
+
+bool waitEvent(const Latest<vrrw_msgs::Event>& events, const std::string& kind, double timeout)
+{
+  for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(timeout); ros::WallTime::now() < end;
+       ros::WallDuration(0.05).sleep())
+    for (const auto& e : events.all())
+      if (e.kind == kind && e.detail.rfind("drill", 0) == 0)
+        return true;
+  return false;
+}
+}  // namespace
+
+TEST(InteractionPhysics, AHeldDrillIsAttachedToTheGhostAndPlannedWith)
+{
+  SceneArm cell("pick_place_drill");
+  Latest<vrrw_msgs::Event> events(*nh, "/operator/events");
+  Latest<sensor_msgs::JointState> robot(*nh, "/ur5e/joint_states");
+  vrrw_physics::SetObjectPose put;  // the drill back on its spot (the open hand pushed it)
+  put.request.object = "drill";
+  put.request.pose = tf2::toMsg(cell.scene.object("drill")->pose);
+  ASSERT_TRUE(call("/physics/set_object_pose", put).response.success) << put.response.message;
+  ros::WallDuration(0.5).sleep();
+  const Eigen::Isometry3d drill =
+      tf2::transformToEigen(tf->lookupTransform("world", "drill", ros::Time(0), ros::Duration(2.0)));
+  ASSERT_EQ(moveTo(tcpOverDrill(drill, 0.12)), "");
+  ASSERT_EQ(moveTo(tcpOverDrill(drill, 0.0)), "");
+  actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper("/ur5e/gripper_controller/gripper_cmd", true);
+  ASSERT_TRUE(gripper.waitForServer(ros::Duration(5.0)));
+  control_msgs::GripperCommandGoal close;
+  close.command.position = 0.8, close.command.max_effort = 70.0;  // past the housing: the grip stalls on it
+  gripper.sendGoal(close);
+  ASSERT_TRUE(waitEvent(events, "attach", 5.0)) << "no attach event";
+  // a plan from the grasp (fingers on the drill, drill on the table) is accepted: lift it
+  ASSERT_EQ(moveTo(tcpOverDrill(drill, 0.12)), "");
+  ros::WallDuration(0.3).sleep();
+  // the ghost carries the drill: 5 cm below the grasp puts the drill into the table (not the fingers)
+  const auto low = ghostTo(tcpOverDrill(drill, -0.05));
+  EXPECT_FALSE(low.response.success);
+  EXPECT_NE(low.response.message.find("drill"), std::string::npos) << low.response.message;
+  EXPECT_NE(low.response.message.find("table"), std::string::npos) << low.response.message;
+  call<std_srvs::Trigger>("/ur5e/ghost/reset");
+  // carried 20 cm toward the robot's front, 3 cm above the table: every state of the plan keeps the drill clear of it
+  trajectory_msgs::JointTrajectory carry;
+  ASSERT_EQ(moveTo(tcpOverDrill(drill, 0.03) * Eigen::Isometry3d(Eigen::Translation3d(0, -0.2, 0)), &carry), "");
+  Eigen::VectorXd state = cell.arm.withJointValues(cell.state, arm6(robot.last()));
+  const int tool = cell.world.model().linkIndex("ur5e_tool0");
+  std::vector<std::string> gripper_links;
+  for (std::vector<int> below{ tool }; !below.empty();)
+  {
+    const auto& link = cell.world.model().links()[below.back()];
+    below.pop_back();
+    gripper_links.push_back(link.name);
+    below.insert(below.end(), link.child_links.begin(), link.child_links.end());
+  }
+  cell.world.setObjectPose("drill", tf2::transformToEigen(tf->lookupTransform("world", "drill", ros::Time(0))));
+  cell.world.attachObject("drill", "ur5e_tcp", state, gripper_links);
+  double closest = 1e9;
+  for (const auto& point : carry.points)
+  {
+    state = cell.arm.withJointValues(state, Eigen::Map<const Eigen::VectorXd>(point.positions.data(), 6));
+    closest = std::min(closest, cell.world.distance(state, "drill").distance);
+  }
+  std::cout << "carry plan: " << carry.points.size() << " states, drill at least " << closest << " m from anything\n";
+  EXPECT_GT(closest, 0.0);
+  control_msgs::GripperCommandGoal open;
+  gripper.sendGoal(open);
+  EXPECT_TRUE(waitEvent(events, "detach", 5.0)) << "no detach event";
 }
 
 int main(int argc, char** argv)
