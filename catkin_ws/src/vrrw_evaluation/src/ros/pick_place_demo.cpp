@@ -191,7 +191,10 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
     [&](std::string& e) {
       if (ghost_)
       {
-        const bool ok = ghost_->drive({}, pick, e, &plan_ms);
+        // Two waypoints on the line down: stops there keep the descent straight and slow enough to replay.
+        const bool ok = ghost_->drive({ interpolatePose(near_pick, pick, 1.0 / 3.0),
+                                        interpolatePose(near_pick, pick, 2.0 / 3.0) },
+                                      pick, e, &plan_ms);
         return used(ghost_->takeUsed()), ok;
       }
       return used(by_joints), moveLinear({ { pick, 1.2 } }, e);
