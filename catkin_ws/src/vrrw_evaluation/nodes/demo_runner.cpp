@@ -113,6 +113,12 @@ int main(int argc, char** argv)
   report.scene = scene;
   report.seed = options.seed;
   PickPlaceDemo demo(client, options);
+  // The teach stage is an operator's: ghost-drive through the interaction node when it runs.
+  GhostOperator ghost(node, cell.robot.name);
+  if (ghost.waitUntilReady(10.0, error))
+    demo.useGhost(&ghost);
+  else
+    std::printf("demo: %s: teaching by the planning services instead\n", error.c_str());
   Demonstration demonstration;
   auto stage = [&](const char* name, const std::function<bool()>& run) {
     std::printf("demo: %s ...\n", name);

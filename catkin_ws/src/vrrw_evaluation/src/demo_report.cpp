@@ -115,7 +115,15 @@ std::string metricsJson(const DemoReport& r)
   std::ostringstream j;
   j << "{\n  \"scene\": " << quoted(r.scene) << ",\n  \"seed\": " << r.seed << ",\n";
   j << "  \"teach\": {\"seconds\": " << number(r.teach_seconds) << ", \"source\": " << quoted(r.teach_source)
-    << ", \"plan_ms\": " << number(r.plan_ms) << "},\n";
+    << ", \"plan_ms\": " << number(r.plan_ms) << ",\n    \"interfaces\": {";
+  for (std::size_t i = 0; i < r.teach_interfaces.size(); ++i)
+  {
+    j << (i ? ", " : "") << quoted(r.teach_interfaces[i].first) << ": [";
+    for (std::size_t k = 0; k < r.teach_interfaces[i].second.size(); ++k)
+      j << (k ? ", " : "") << quoted(r.teach_interfaces[i].second[k]);
+    j << "]";
+  }
+  j << "}},\n";
   j << "  \"bag\": {\"messages\": " << r.bag_messages << ", \"file\": " << quoted(r.bag_file) << ", \"topics\": {";
   std::string sep;
   for (const auto& [topic, count] : r.message_counts)

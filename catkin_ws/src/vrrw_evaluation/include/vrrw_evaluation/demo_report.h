@@ -1,6 +1,7 @@
 #pragma once
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <vrrw_evaluation/demonstration.h>
@@ -27,6 +28,8 @@ struct DemoReport
   std::string teach_source;  ///< how the demonstration was made
   std::uint64_t seed = 0;
   double teach_seconds = 0.0;
+  /// Per instruction in order: the interfaces the scripted operator used (topics, services, actions).
+  std::vector<std::pair<std::string, std::vector<std::string>>> teach_interfaces;
   std::uint64_t bag_messages = 0;
   std::string bag_file;  ///< the demonstration's bag
   std::map<std::string, std::uint64_t> message_counts;  ///< per topic

@@ -11,6 +11,7 @@
 #include <vrrw_evaluation/instruction_dmps.h>
 #include <vrrw_evaluation/pick_place_task.h>
 
+#include "ghost_operator.h"
 #include "workspace_client.h"
 
 namespace vrrw_evaluation
@@ -32,6 +33,9 @@ class PickPlaceDemo
 public:
   PickPlaceDemo(WorkspaceClient& client, DemoOptions options);
 
+  /// \brief Teach the approach and the grasp by ghost-drive (the interaction node's services); null:
+  /// by the planning services and TCP lines.
+  void useGhost(GhostOperator* ghost) { ghost_ = ghost; }
   /// \brief The scripted demonstration: near-pick (planned), pick, close, back, carry and lower, open.
   bool teach(Demonstration& demo, DemoReport& report, std::string& error);
   /// \brief Direct imitation of every instruction from the reset scene; errors into `report`.
@@ -54,6 +58,7 @@ private:
   void writeRecording(const std::string& row, const Recording& recording, const std::vector<Segment>& segments);
 
   WorkspaceClient& client_;
+  GhostOperator* ghost_ = nullptr;
   DemoOptions options_;
   std::vector<double> home_;
   Eigen::Isometry3d object_start_ = Eigen::Isometry3d::Identity();

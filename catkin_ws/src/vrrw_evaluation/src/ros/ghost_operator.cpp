@@ -1,0 +1,87 @@
+#include "ghost_operator.h"
+
+#include <algorithm>
+#include <std_srvs/Trigger.h>
+#include <tf2_eigen/tf2_eigen.h>
+#include <vrrw_msgs/GhostExecute.h>
+#include <vrrw_msgs/GhostPlan.h>
+#include <vrrw_msgs/GhostSetPose.h>
+
+namespace vrrw_evaluation
+{
+GhostOperator::GhostOperator(ros::NodeHandle& node, const std::string& robot)
+  : node_(node), prefix_("/" + robot + "/ghost/")
+{
+}
+
+bool GhostOperator::waitUntilReady(double seconds, std::string& error)
+{
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
+  for (const char* name : { "reset", "clear_waypoints", "set_pose", "add_waypoint", "plan", "execute" })
+  {
+    const double left = std::max(0.01, (deadline - ros::WallTime::now()).toSec());
+    if (!ros::service::waitForService(prefix_ + name, ros::Duration(left)))
+      return error = "no interaction node (" + prefix_ + name + ")", false;
+  }
+  return true;
+}
+
+void GhostOperator::use(const std::string& service)
+{
+  if (std::find(used_.begin(), used_.end(), service) == used_.end())
+    used_.push_back(service);
+}
+
+bool GhostOperator::trigger(const std::string& service, std::string& error)
+{
+  std_srvs::Trigger call;
+  use(prefix_ + service);
+  if (!ros::service::call(prefix_ + service, call))
+    return error = prefix_ + service + ": call failed", false;
+  if (!call.response.success)
+    return error = prefix_ + service + ": " + call.response.message, false;
+  return true;
+}
+
+bool GhostOperator::setPose(const Eigen::Isometry3d& tcp, std::string& error)
+{
+  vrrw_msgs::GhostSetPose call;
+  call.request.pose.header.frame_id = "world";
+  call.request.pose.pose = tf2::toMsg(tcp);
+  use(prefix_ + "set_pose");
+  if (!ros::service::call(prefix_ + "set_pose", call))
+    return error = prefix_ + "set_pose: call failed", false;
+  if (!call.response.success)
+    return error = prefix_ + "set_pose: " + call.response.message, false;
+  return true;
+}
+
+bool GhostOperator::drive(const std::vector<Eigen::Isometry3d>& waypoints, const Eigen::Isometry3d& goal,
+                          std::string& error, double* plan_ms)
+{
+  // The ghost starts at the robot, so IK of each pose is the solution nearest the arm as it stands.
+  if (!trigger("reset", error) || !trigger("clear_waypoints", error))
+    return false;
+  for (const Eigen::Isometry3d& waypoint : waypoints)
+    if (!setPose(waypoint, error) || !trigger("add_waypoint", error))
+      return false;
+  if (!setPose(goal, error))
+    return false;
+  vrrw_msgs::GhostPlan plan;
+  use(prefix_ + "plan");
+  const ros::WallTime start = ros::WallTime::now();
+  if (!ros::service::call(prefix_ + "plan", plan))
+    return error = prefix_ + "plan: call failed", false;
+  if (plan_ms)
+    *plan_ms += (ros::WallTime::now() - start).toSec() * 1e3;
+  if (!plan.response.success)
+    return error = prefix_ + "plan: " + plan.response.message, false;
+  vrrw_msgs::GhostExecute execute;
+  use(prefix_ + "execute");
+  if (!ros::service::call(prefix_ + "execute", execute))
+    return error = prefix_ + "execute: call failed", false;
+  if (!execute.response.success)
+    return error = prefix_ + "execute: " + execute.response.message + " " + execute.response.error_string, false;
+  return true;
+}
+}  // namespace vrrw_evaluation

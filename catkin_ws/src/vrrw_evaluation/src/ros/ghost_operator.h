@@ -1,0 +1,37 @@
+#pragma once
+// The scripted operator's ghost-drive: the same services an operator's marker menu calls
+// (/<robot>/ghost/{reset,clear_waypoints,set_pose,add_waypoint,plan,execute}), never a joint command.
+#include <Eigen/Geometry>
+#include <ros/ros.h>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vrrw_evaluation
+{
+class GhostOperator
+{
+public:
+  GhostOperator(ros::NodeHandle& node, const std::string& robot);
+
+  /// \brief Waits for the interaction node's ghost services; false with `error` naming the missing one.
+  bool waitUntilReady(double seconds, std::string& error);
+
+  /// \brief Ghost-drive: ghost = robot, the ghost at every TCP pose of `waypoints` (in "world") added as a
+  /// waypoint, the ghost at `goal`, plan, execute. Adds the planning time to `plan_ms`.
+  bool drive(const std::vector<Eigen::Isometry3d>& waypoints, const Eigen::Isometry3d& goal, std::string& error,
+             double* plan_ms = nullptr);
+
+  /// \brief The services called since the last take, in first-call order (metrics.json's teach.interfaces).
+  std::vector<std::string> takeUsed() { return std::exchange(used_, {}); }
+
+private:
+  bool trigger(const std::string& service, std::string& error);
+  bool setPose(const Eigen::Isometry3d& tcp, std::string& error);
+
+  ros::NodeHandle& node_;
+  std::string prefix_;  ///< /<robot>/ghost/
+  std::vector<std::string> used_;
+  void use(const std::string& service);
+};
+}  // namespace vrrw_evaluation
