@@ -1,5 +1,6 @@
 #include "replay.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <mutex>
@@ -31,8 +32,14 @@ namespace
 using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;
 using GripperClient = actionlib::SimpleActionClient<control_msgs::GripperCommandAction>;
 
-/// The robot's limits from the running workspace: URDF velocities, the config's accelerations.
-void limits(ros::NodeHandle& nh, const RobotTrack& track, ReplayOptions& options)
+/// The range a gripper goal may name: the actuated joint's URDF limits (none: unbounded).
+struct GripperRange
+{
+  double lower = -1e9, upper = 1e9;
+};
+
+/// The robot's limits from the running workspace: URDF velocities, the config's accelerations, the gripper range.
+void limits(ros::NodeHandle& nh, const RobotTrack& track, ReplayOptions& options, GripperRange& gripper)
 {
   const std::string key = "/scene/robots/" + track.robot + "/";
   std::vector<std::string> joints;
@@ -57,6 +64,13 @@ void limits(ros::NodeHandle& nh, const RobotTrack& track, ReplayOptions& options
     options.max_velocity.push_back(urdf_joint.max_velocity);
     const auto found = acceleration.find(joint);
     options.max_acceleration.push_back(found == acceleration.end() ? 1e9 : found->second);
+  }
+  const int finger = track.gripper_joint.empty() ? -1 : model.jointIndex(track.gripper_joint);
+  if (finger >= 0)
+  {
+    const auto& joint = model.joints()[static_cast<std::size_t>(finger)];
+    if (joint.type == vrrw_kinematics::JointModel::Type::Revolute || joint.type == vrrw_kinematics::JointModel::Type::Prismatic)
+      gripper = { joint.lower, joint.upper };
   }
 }
 
@@ -88,10 +102,13 @@ bool send(Client& client, const Goal& goal, const std::string& name, double time
   return state == actionlib::SimpleClientGoalState::SUCCEEDED;
 }
 
-control_msgs::GripperCommandGoal gripperGoal(double position)
+/// A recorded gripper position as a goal. Measured positions may lie a hair outside the joint's range (the
+/// physics' limits are stiff springs, -5e-18 was seen), which the gripper controller rightly refuses: at the
+/// limit they mean the limit.
+control_msgs::GripperCommandGoal gripperGoal(double position, const GripperRange& range)
 {
   control_msgs::GripperCommandGoal goal;
-  goal.command.position = position;
+  goal.command.position = std::clamp(position, range.lower, range.upper);
   return goal;
 }
 }  // namespace
@@ -136,7 +153,8 @@ int runReplay(int argc, char** argv)
   ReplayOptions replay;
   replay.speed = options.number("speed", 1.0);
   replay.tolerance = options.number("tolerance", 1e-3);
-  limits(nh, track, replay);
+  GripperRange gripper_range;
+  limits(nh, track, replay, gripper_range);
   const ReplayPath path = replayPath(track, replay);
   std::cout << "replay: " << track.robot << ", " << track.states.size() << " recorded states -> "
             << path.trajectory.points.size() << " points over " << path.trajectory.duration() << " s; de-jitter: max "
@@ -157,7 +175,7 @@ int runReplay(int argc, char** argv)
   if (!arm.waitForServer(ros::Duration(10.0)) || !gripper.waitForServer(ros::Duration(10.0)))
     throw DemoError("replay: " + ns + "arm_controller or gripper_controller does not answer");
   if (gripper_only)
-    return send(gripper, gripperGoal(gripper_target), "gripper", 10.0) ? 0 : 1;
+    return send(gripper, gripperGoal(gripper_target, gripper_range), "gripper", 10.0) ? 0 : 1;
 
   // To the recorded start, at a fifth of the velocity limits, and the recorded gripper.
   sensor_msgs::JointStateConstPtr now = ros::topic::waitForMessage<sensor_msgs::JointState>(ns + "joint_states", ros::Duration(5.0));
@@ -181,7 +199,7 @@ int runReplay(int argc, char** argv)
   control_msgs::FollowJointTrajectoryGoal goal;
   goal.trajectory = vrrw_trajectory::toMsg(approach);
   if (!send(arm, goal, "to the recorded start", move_time + 10.0, ns, mode == "real") ||
-      !send(gripper, gripperGoal(track.states.front().gripper), "gripper to the recorded start", 10.0))
+      !send(gripper, gripperGoal(track.states.front().gripper, gripper_range), "gripper to the recorded start", 10.0))
     return 1;
   // The controller now holds the recorded start (a demonstration starts from the scene's reset state), so
   // the reset puts the objects back without the arm jumping to an older command.
@@ -211,7 +229,7 @@ int runReplay(int argc, char** argv)
   for (const GripperGoal& g : track.gripper_goals)
   {
     ros::Time::sleepUntil(start + ros::Duration((g.time - t0) * scale));
-    gripper.sendGoal(gripperGoal(g.position));
+    gripper.sendGoal(gripperGoal(g.position, gripper_range));
     std::cout << "replay: gripper -> " << g.position << " at t = " << (g.time - t0) * scale << " s\n";
   }
   const double duration = path.trajectory.duration();

@@ -138,7 +138,8 @@ JointScaling chooseScaling(const DemoKinematics& kinematics, const std::vector<s
     const bool degenerate = amplitude > 0.0 && std::abs(offset) <= parameters.degenerate_ratio * amplitude;
     AmplitudeScaling scaling = parameters.scaling;
     if (scaling == AmplitudeScaling::automatic)
-      scaling = degenerate ? AmplitudeScaling::demo_amplitude : AmplitudeScaling::goal_offset;
+      scaling = degenerate || amplitude < parameters.still_range ? AmplitudeScaling::demo_amplitude
+                                                                 : AmplitudeScaling::goal_offset;
     if (degenerate)
       result.warnings.push_back(degenerateWarning(names[j], offset, amplitude, parameters.degenerate_ratio, scaling));
     result.amplitude[j] = amplitude;

@@ -54,6 +54,8 @@ void DmpParameters::validate() const
     throw DmpError("D = " + format(*D) + ": must be a finite number >= 0");
   if (!(degenerate_ratio >= 0.0) || !std::isfinite(degenerate_ratio))
     throw DmpError("degenerate ratio = " + format(degenerate_ratio) + ": must be >= 0");
+  if (!(still_range >= 0.0) || !std::isfinite(still_range))
+    throw DmpError("still range = " + format(still_range) + ": must be >= 0");
   if (derivative_half_window == 0)
     throw DmpError("derivative half window = 0: must be >= 1");
 }

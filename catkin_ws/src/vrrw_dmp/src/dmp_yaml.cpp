@@ -89,6 +89,7 @@ std::string toYaml(const Dmp& dmp)
   out << YAML::Key << "D" << YAML::Value << p.damping();
   out << YAML::Key << "scaling" << YAML::Value << toString(p.scaling);
   out << YAML::Key << "degenerate_ratio" << YAML::Value << p.degenerate_ratio;
+  out << YAML::Key << "still_range" << YAML::Value << p.still_range;
   out << YAML::Key << "derivative_half_window" << YAML::Value << p.derivative_half_window;
   out << YAML::EndMap;
   out << YAML::Key << "demo_duration" << YAML::Value << dmp.demoDuration();
@@ -159,6 +160,8 @@ Dmp parseModel(const std::string& text, const std::string& source)
   parameters.K = read.scalar<double>(p, "K", "parameters.");
   parameters.D = read.scalar<double>(p, "D", "parameters.");
   parameters.degenerate_ratio = read.scalar<double>(p, "degenerate_ratio", "parameters.");
+  if (p["still_range"])  // models written before it have none: off
+    parameters.still_range = read.scalar<double>(p, "still_range", "parameters.");
   const auto window = read.scalar<long long>(p, "derivative_half_window", "parameters.");
   if (window <= 0)
     read.fail("parameters.derivative_half_window", std::to_string(window) + " must be > 0");

@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
+#include <iostream>
 #include <new>
 
 #include <vrrw_dmp/dmp.h>
@@ -238,6 +240,44 @@ TEST(Dmp, PlanWarnsWhenTheNewGoalEqualsTheNewStart)
   RolloutRequest wrong;
   wrong.goal = { 1.0 };
   EXPECT_EQ(errorOf([&] { dmp.planWarnings(wrong); }), "goal: 1 values for 6 joints");
+}
+
+TEST(Dmp, AJointThatHardlyMovesIsNotStretchedToANewGoalWithAStillRange)
+{
+  // Joint 3 drifts 3 mrad, wobbling on the way (as a wrist does while the arm carries); a new goal 80 mrad
+  // away in the other direction would scale that wobble by -27 with the paper's g - x0.
+  auto demo = sample(SmoothDemo{}, 400, 0.0);
+  for (auto& point : demo.points)
+    point.positions[2] = 0.4 - 0.003 * point.time / 2.0 + 0.002 * std::sin(M_PI * point.time);
+  RolloutRequest elsewhere = fineRollout();
+  auto excursion = [&](const Dmp& dmp) {
+    elsewhere.start = dmp.demoStart();
+    elsewhere.goal = dmp.demoGoal();
+    elsewhere.goal[2] = elsewhere.start[2] + 0.08;
+    double worst = 0.0;
+    for (const auto& point : dmp.rollout(elsewhere).points)  // outside [start, goal]
+      worst = std::max({ worst, elsewhere.start[2] - point.positions[2], point.positions[2] - elsewhere.goal[2] });
+    return worst;
+  };
+  DmpParameters automatic;
+  automatic.scaling = AmplitudeScaling::automatic;
+  const Dmp stretched = Dmp::learn(demo, automatic);
+  EXPECT_EQ(stretched.jointScaling()[2], AmplitudeScaling::goal_offset);
+  automatic.still_range = 0.01;
+  const Dmp kept = Dmp::learn(demo, automatic);
+  EXPECT_EQ(kept.jointScaling()[2], AmplitudeScaling::demo_amplitude);
+  EXPECT_EQ(kept.jointScaling()[0], AmplitudeScaling::goal_offset);
+  std::cout << "joint 3 outside [start, goal]: " << excursion(stretched) << " rad stretched, " << excursion(kept)
+            << " rad with a still range\n";
+  EXPECT_GT(excursion(stretched), 0.02);
+  EXPECT_LT(excursion(kept), 0.003);
+  EXPECT_THROW(
+      {
+        DmpParameters bad;
+        bad.still_range = -1.0;
+        bad.validate();
+      },
+      vrrw_dmp::DmpError);
 }
 
 TEST(Dmp, PlanWarnsWhenTheGoalScalingMirrorsOrAmplifiesTheShape)

@@ -112,13 +112,11 @@ int main(int argc, char** argv)
   DemoReport report;
   report.scene = scene;
   report.seed = options.seed;
-  PickPlaceDemo demo(client, options);
-  // The teach stage is an operator's: ghost-drive through the interaction node when it runs.
+  // The teach stage is an operator's: ghost-drive through the interaction node.
   GhostOperator ghost(node, cell.robot.name);
-  if (ghost.waitUntilReady(10.0, error))
-    demo.useGhost(&ghost);
-  else
-    std::printf("demo: %s: teaching by the planning services instead\n", error.c_str());
+  if (!ghost.waitUntilReady(10.0, error))
+    return spinner.stop(), std::cerr << "demo: " << error << ": the teach stage needs the ghost services\n", 1;
+  PickPlaceDemo demo(client, ghost, options);
   Demonstration demonstration;
   auto stage = [&](const char* name, const std::function<bool()>& run) {
     std::printf("demo: %s ...\n", name);

@@ -1,10 +1,26 @@
 #include <vrrw_evaluation/instruction_dmps.h>
 #include <vrrw_evaluation/pick_place_task.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace vrrw_evaluation
 {
+namespace
+{
+/// The largest |velocity| / limit over the trajectory's points and joints; 0 without limits.
+double peakVelocityRatio(const vrrw_trajectory::JointTrajectory& motion, const std::vector<double>& max_velocity)
+{
+  double ratio = 0.0;
+  for (const auto& point : motion.points)
+    for (std::size_t j = 0; j < max_velocity.size() && j < point.velocities.size(); ++j)
+      if (max_velocity[j] > 0.0)
+        ratio = std::max(ratio, std::abs(point.velocities[j]) / max_velocity[j]);
+  return ratio;
+}
+}  // namespace
+
 InstructionDmps::InstructionDmps(const Demonstration& demo, const vrrw_dmp::DmpParameters& parameters)
 {
   for (const Segment& segment : demo.segments)
@@ -33,16 +49,25 @@ const vrrw_dmp::Dmp& InstructionDmps::dmp(const std::string& instruction) const
 
 vrrw_trajectory::JointTrajectory InstructionDmps::rollout(const std::string& instruction,
                                                           const std::vector<double>& start,
-                                                          const std::vector<double>& goal, double dt) const
+                                                          const std::vector<double>& goal, double dt,
+                                                          const std::vector<double>& max_velocity) const
 {
   vrrw_dmp::RolloutRequest request;
   request.start = start;
   request.goal = goal;
   request.dt = dt;
+  request.tau = dmp(instruction).demoDuration();
   vrrw_trajectory::JointTrajectory motion = dmp(instruction).rollout(request);
+  // A DMP's speed is 1/tau: a rollout over the limits runs again, exactly as much slower as it needs.
+  const double over = peakVelocityRatio(motion, max_velocity) / kVelocityMargin;
+  if (over > 1.0)
+  {
+    request.tau *= over;
+    motion = dmp(instruction).rollout(request);
+  }
   // The spring's tail creeps over the last millirad for up to 3 tau: end at the goal, at rest, once within
   // kSettledWithin of it after tau (the controller's last segment covers the rest).
-  const double tau = dmp(instruction).demoDuration();
+  const double tau = request.tau;
   for (std::size_t k = 0; k < motion.points.size(); ++k)
   {
     double off = 0.0;

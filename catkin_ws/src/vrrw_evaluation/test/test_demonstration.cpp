@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 
 using namespace vrrw_evaluation;
 
@@ -76,4 +78,32 @@ TEST(InstructionDmps, OneModelPerArmInstructionReproducesAndReachesNewGoals)
   EXPECT_LT(std::max(std::abs(before[0] - 0.6), std::abs(before[1] + 0.2)), InstructionDmps::kSettledWithin);
   EXPECT_NEAR(rollout.points.front().positions[0], 0.0, 1e-12);
   EXPECT_THROW(dmps.dmp("close_gripper"), std::invalid_argument);
+}
+
+TEST(InstructionDmps, ARolloutOverTheVelocityLimitsIsSlowedDownToThem)
+{
+  vrrw_dmp::DmpParameters parameters;
+  parameters.basis_count = 30;
+  parameters.scaling = vrrw_dmp::AmplitudeScaling::automatic;
+  const InstructionDmps dmps(pickLike(), parameters);
+  auto peak = [](const vrrw_trajectory::JointTrajectory& motion, std::size_t j) {
+    double largest = 0.0;
+    for (const auto& p : motion.points)
+      largest = std::max(largest, std::abs(p.velocities[j]));
+    return largest;
+  };
+  // Three times the demonstrated 0.5 rad: about three times as fast, over a 1.2 rad/s limit on joint a.
+  const std::vector<double> start{ 0.0, 0.0 }, goal{ 1.5, -0.2 }, limits{ 1.2, 10.0 };
+  const auto free = dmps.rollout("move_to_near_pick", start, goal);
+  const auto bounded = dmps.rollout("move_to_near_pick", start, goal, 0.01, limits);
+  std::cout << "peak velocity of joint a: " << peak(free, 0) << " rad/s unbounded, " << peak(bounded, 0)
+            << " rad/s within 0.9 x 1.2, over " << bounded.duration() << " s instead of " << free.duration() << " s\n";
+  EXPECT_GT(peak(free, 0), 1.2);
+  EXPECT_LT(peak(bounded, 0), 1.2);
+  // slowed just enough: the margin below the limit, up to where the 10 ms samples catch the peak
+  EXPECT_NEAR(peak(bounded, 0), InstructionDmps::kVelocityMargin * 1.2, 0.01 * 1.2);
+  EXPECT_EQ(bounded.points.back().positions, goal);
+  // Within the limits nothing changes (a peak of 1.13 rad/s on joint a).
+  const auto same = dmps.rollout("move_to_near_pick", start, { 0.6, -0.2 }, 0.01, { 3.0, 10.0 });
+  EXPECT_EQ(same.duration(), dmps.rollout("move_to_near_pick", start, { 0.6, -0.2 }).duration());
 }

@@ -174,12 +174,13 @@ Outcome GhostInterface::reset()
   return moved(ghost_.reset(view_.liveState()), "reset");
 }
 
-Outcome GhostInterface::plan(double time_limit, trajectory_msgs::JointTrajectory* trajectory)
+Outcome GhostInterface::plan(double time_limit, trajectory_msgs::JointTrajectory* trajectory,
+                             const vrrw_kinematics::SpeedScaling& scaling)
 {
   std::lock_guard<std::mutex> lock(view_.mutex());
   if (!std::isfinite(time_limit))
     return { false, "time_limit: not finite" };
-  const vrrw_kinematics::TrajectoryResult result = ghost_.plan(view_.liveState(), time_limit);
+  const vrrw_kinematics::TrajectoryResult result = ghost_.plan(view_.liveState(), time_limit, scaling);
   if (!result.success)
   {
     const std::string where = result.failed_waypoint >= 0 && result.failed_waypoint < int(ghost_.waypoints().size())
@@ -239,7 +240,9 @@ Outcome GhostInterface::gripper(bool close)
 
 bool GhostInterface::onPlan(vrrw_msgs::GhostPlan::Request& req, vrrw_msgs::GhostPlan::Response& res)
 {
-  const Outcome o = plan(req.time_limit, &res.trajectory);
+  const Outcome o = plan(req.time_limit, &res.trajectory,
+                         vrrw_kinematics::speedScaling(req.max_velocity_scaling_factor,
+                                                       req.max_acceleration_scaling_factor));
   res.success = o.success, res.message = o.message;
   return true;
 }

@@ -45,7 +45,8 @@ public:
   Outcome addWaypoint();
   Outcome clearWaypoints();
   Outcome reset();
-  Outcome plan(double time_limit, trajectory_msgs::JointTrajectory* trajectory = nullptr);
+  Outcome plan(double time_limit, trajectory_msgs::JointTrajectory* trajectory = nullptr,
+               const vrrw_kinematics::SpeedScaling& scaling = {});
   /// \brief Sends the last plan; waits for the action's result when `result` is given.
   Outcome execute(control_msgs::FollowJointTrajectoryResult* result = nullptr);
   Outcome gripper(bool close);

@@ -224,6 +224,11 @@ void WorldView::publishGhostFrames(const Eigen::VectorXd& ghost_state)
   std::vector<Eigen::Isometry3d> links;
   world_.model().linkTransforms(ghost_state, links);
   const ros::Time now = ros::Time::now();
+  // tf refuses a frame twice at one stamp (TF_REPEATED_DATA): under sim time, timer events that queued up
+  // fire at one clock reading; the next tick sends the ghost as it is then.
+  if (now <= last_ghost_stamp_)
+    return;
+  last_ghost_stamp_ = now;
   const std::string& root = world_.model().links()[0].name;
   std::vector<geometry_msgs::TransformStamped> frames;
   frames.reserve(links.size());

@@ -66,6 +66,7 @@ private:
   tf2_ros::Buffer tf_;
   tf2_ros::TransformListener listener_;
   tf2_ros::TransformBroadcaster broadcaster_;
+  ros::Time last_ghost_stamp_;
   std::map<std::string, Held> held_;                          ///< by object
   std::map<std::string, std::vector<std::string>> gripper_links_;  ///< by robot: the links below its flange
   ros::Subscriber joint_states_, contacts_;

@@ -145,9 +145,11 @@ Outcome GhostRobot::clearWaypoints()
   return { true, std::to_string(count) + " waypoints cleared" };
 }
 
-vrrw_kinematics::TrajectoryResult GhostRobot::plan(const Eigen::VectorXd& world_state, double time_limit)
+vrrw_kinematics::TrajectoryResult GhostRobot::plan(const Eigen::VectorXd& world_state, double time_limit,
+                                                   const vrrw_kinematics::SpeedScaling& scaling)
 {
   vrrw_kinematics::TrajectoryRequest request;
+  request.scaling = scaling;
   request.plan.start = arm_.jointValues(world_state);
   request.plan.goal_joints = q_;
   request.plan.time_limit = time_limit > 0.0 ? time_limit : 1.0;

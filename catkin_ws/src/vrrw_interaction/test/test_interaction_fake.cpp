@@ -13,6 +13,7 @@
 #include <vrrw_msgs/GhostPreset.h>
 #include <vrrw_msgs/GhostSetJoints.h>
 #include <vrrw_msgs/GhostSetPose.h>
+#include <vrrw_trajectory/msg_conversions.h>
 
 #include "interaction_fixture.h"
 
@@ -214,6 +215,18 @@ TEST(InteractionFake, PlanThroughTwoWaypointsAndExecuteEndsAtTheGhost)
       nearest = std::min(nearest, (Eigen::Map<const Eigen::VectorXd>(p.positions.data(), 6) - w).cwiseAbs().maxCoeff());
     EXPECT_LT(nearest, 1e-6);
   }
+  // The same plan at half the velocity and a quarter of the acceleration limits: played at half speed.
+  const double full_speed = vrrw_trajectory::fromMsg(plan.response.trajectory).duration();
+  vrrw_msgs::GhostPlan slow = plan;
+  slow.request.max_velocity_scaling_factor = 1.5;
+  slow = call("/ur5e/ghost/plan", slow);
+  EXPECT_FALSE(slow.response.success);
+  EXPECT_NE(slow.response.message.find("max_velocity_scaling_factor: 1.5"), std::string::npos) << slow.response.message;
+  slow.request.max_velocity_scaling_factor = 0.5;
+  slow.request.max_acceleration_scaling_factor = 0.25;
+  slow = call("/ur5e/ghost/plan", slow);
+  ASSERT_TRUE(slow.response.success) << slow.response.message;
+  EXPECT_NEAR(vrrw_trajectory::fromMsg(slow.response.trajectory).duration(), 2.0 * full_speed, 0.02 * full_speed);
   const auto execute = call<vrrw_msgs::GhostExecute>("/ur5e/ghost/execute");
   ASSERT_TRUE(execute.response.success) << execute.response.message;
   EXPECT_EQ(execute.response.error_code, 0);

@@ -197,6 +197,7 @@ bool RobotServices::plan(vrrw_msgs::Plan::Request& req, vrrw_msgs::Plan::Respons
     const Eigen::VectorXd state = context_.overlay(req.start);
     TrajectoryRequest request;
     request.plan = planRequest(req, state);
+    request.scaling = speedScaling(req.max_velocity_scaling_factor, req.max_acceleration_scaling_factor);
     const TrajectoryResult result = arm_.planTrajectory(request, state, req.link);
     res.planning_time = result.planning_time;
     if (!result.success)

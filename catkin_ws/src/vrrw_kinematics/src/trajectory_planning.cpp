@@ -57,6 +57,24 @@ void appendLeg(const vrrw_trajectory::JointTrajectory& leg, const std::vector<Ei
   result.path_length += pathLength(path);
 }
 
+/// The limits times the request's scaling; empty limits (and `result` failed) when a factor is not in (0, 1].
+TimingOptions scaled(const TimingOptions& limits, const SpeedScaling& scaling, TrajectoryResult& result)
+{
+  for (const auto& [name, factor] : { std::pair{ "max_velocity_scaling_factor", scaling.velocity },
+                                      std::pair{ "max_acceleration_scaling_factor", scaling.acceleration } })
+    if (!(factor > 0.0 && factor <= 1.0))
+    {
+      fail(result, ErrorCode::InvalidArgument, std::string(name) + ": " + std::to_string(factor) + ": must be in (0, 1]", -1);
+      return {};
+    }
+  TimingOptions timing = limits;
+  for (double& v : timing.max_velocity)
+    v *= scaling.velocity;
+  for (double& a : timing.max_acceleration)
+    a *= scaling.acceleration;
+  return timing;
+}
+
 bool endpointsValid(MotionPlanner& planner, const TrajectoryRequest& request, TrajectoryResult& result)
 {
   const PlanResult start = planner.checkEndpoint(request.plan.start, "start");
@@ -72,7 +90,13 @@ bool endpointsValid(MotionPlanner& planner, const TrajectoryRequest& request, Tr
 }
 }  // namespace
 
-TrajectoryResult planTrajectory(MotionPlanner& planner, const TimingOptions& timing, const TrajectoryRequest& request)
+SpeedScaling speedScaling(double max_velocity_scaling_factor, double max_acceleration_scaling_factor)
+{
+  return { max_velocity_scaling_factor == 0.0 ? 1.0 : max_velocity_scaling_factor,
+           max_acceleration_scaling_factor == 0.0 ? 1.0 : max_acceleration_scaling_factor };
+}
+
+TrajectoryResult planTrajectory(MotionPlanner& planner, const TimingOptions& limits, const TrajectoryRequest& request)
 {
   const Clock::time_point started = Clock::now();
   TrajectoryResult result;
@@ -82,7 +106,8 @@ TrajectoryResult planTrajectory(MotionPlanner& planner, const TimingOptions& tim
     fail(result, ErrorCode::InvalidArgument, "time limit: must be positive and finite, got " + std::to_string(limit), -1);
     return result;
   }
-  if (!endpointsValid(planner, request, result))
+  const TimingOptions timing = scaled(limits, request.scaling, result);
+  if (timing.max_velocity.empty() || !endpointsValid(planner, request, result))
     return result;
   const TimeParameterization blended(timing);
   TimingOptions stopping = timing;

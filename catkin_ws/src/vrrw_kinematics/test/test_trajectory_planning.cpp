@@ -1,6 +1,10 @@
 // planTrajectory: start -> joint-space waypoints -> goal around a pillar, on the UR5e test URDF.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
 #include <vrrw_kinematics/trajectory_planning.h>
 
 #include "fixtures.h"
@@ -147,4 +151,41 @@ TEST_F(TrajectoryPlanningTest, NamesTheWaypointThatFails)
   TrajectoryRequest no_time = request_;
   no_time.plan.time_limit = std::nan("");
   EXPECT_EQ(planTrajectory(*planner_, timing_, no_time).code, ErrorCode::InvalidArgument);
+}
+
+TEST_F(TrajectoryPlanningTest, SpeedScalingBoundsEveryJointAtItsFractionOfTheLimits)
+{
+  request_.waypoints.clear();
+  request_.plan.seed = 7;
+  const TrajectoryResult full = planTrajectory(*planner_, timing_, request_);
+  request_.scaling = { 0.5, 0.25 };
+  const TrajectoryResult slow = planTrajectory(*planner_, timing_, request_);
+  ASSERT_TRUE(full.success && slow.success) << full.message << slow.message;
+  double peak_velocity = 0.0, full_peak = 0.0;
+  for (const auto& p : slow.trajectory.points)
+    for (const double v : p.velocities)
+      peak_velocity = std::max(peak_velocity, std::abs(v));
+  for (const auto& p : full.trajectory.points)
+    for (const double v : p.velocities)
+      full_peak = std::max(full_peak, std::abs(v));
+  std::cout << "full speed " << full.trajectory.duration() << " s, peak " << full_peak << " rad/s; scaled (0.5, 0.25) "
+            << slow.trajectory.duration() << " s, peak " << peak_velocity << " rad/s\n";
+  EXPECT_LE(peak_velocity, 0.5 * M_PI + 1e-6);
+  EXPECT_GT(full_peak, 0.5 * M_PI);  // the unscaled plan needs more than the scaled limit
+  // Same path (same seed); half the velocity and a quarter of the acceleration is the time-optimal
+  // trajectory played at half speed: twice as long.
+  EXPECT_NEAR(slow.trajectory.duration(), 2.0 * full.trajectory.duration(), 0.02 * full.trajectory.duration());
+  EXPECT_LT((positions(slow.trajectory.points.back()) - *request_.plan.goal_joints).norm(), 1e-12);
+
+  for (const SpeedScaling bad : { SpeedScaling{ 0.0, 1.0 }, SpeedScaling{ 1.0, 1.5 }, SpeedScaling{ NAN, 1.0 } })
+  {
+    request_.scaling = bad;
+    const TrajectoryResult refused = planTrajectory(*planner_, timing_, request_);
+    EXPECT_FALSE(refused.success);
+    EXPECT_EQ(refused.code, ErrorCode::InvalidArgument);
+    EXPECT_NE(refused.message.find("scaling_factor"), std::string::npos) << refused.message;
+  }
+  const SpeedScaling unset = speedScaling(0.0, 0.0);
+  EXPECT_EQ(unset.velocity, 1.0);
+  EXPECT_EQ(unset.acceleration, 1.0);
 }

@@ -76,10 +76,38 @@ def view_pixels(path):
     return image[70:-40, :, :]
 
 
-def foreground_share(pixels):
+def background_distance(pixels):
     import numpy
-    distance = numpy.abs(pixels - numpy.array(BACKGROUND, dtype='int16')).max(axis=2)
-    return float((distance > 40).mean())
+    return numpy.abs(pixels - numpy.array(BACKGROUND, dtype='int16')).max(axis=2)
+
+
+def foreground_share(pixels):
+    return float((background_distance(pixels) > 40).mean())
+
+
+def background_share(pixels):
+    return float((background_distance(pixels) <= 8).mean())
+
+
+def settled_frame(display, frame, start, timeout, still_seconds=1.0):
+    """The 3D view once rviz has painted it (its background colour fills part of it) and it stayed the same
+    for still_seconds: until the window is mapped the root window is uniformly black, and a frame that is
+    merely unchanged for one capture interval may be that black root window or rviz blocked loading meshes."""
+    still_since, previous = None, None
+    while True:
+        capture(display, frame)
+        pixels = view_pixels(frame)
+        painted = background_share(pixels) > 0.2
+        same = previous is not None and previous.shape == pixels.shape and (abs(previous - pixels) > 8).mean() < 1e-4
+        now = time.monotonic()
+        still_since = (still_since or now) if painted and same else None
+        if still_since is not None and now - still_since >= still_seconds:
+            return pixels
+        if now - start > timeout:
+            why = 'stay still' if painted else 'paint its 3D view (background colour not on the screen)'
+            sys.exit(f'render: rviz did not {why} within {timeout} s')
+        previous = pixels
+        time.sleep(0.25)
 
 
 def wait_for_scene(timeout):
@@ -167,16 +195,8 @@ def main():
         except RuntimeError as error:
             sys.exit(f'render: --ghost {error}')
         log(f'{links} links in tf after {time.monotonic() - start:.1f} s; waiting for a still frame')
-        frame, previous = os.path.join(workdir, 'frame.png'), None
-        while True:
-            capture(display, frame)
-            pixels = view_pixels(frame)
-            if previous is not None and previous.shape == pixels.shape and (abs(previous - pixels) > 8).mean() < 1e-4:
-                break
-            if time.monotonic() - start > args.timeout:
-                sys.exit(f'render: rviz did not settle on a frame within {args.timeout} s')
-            previous = pixels
-            time.sleep(0.3)
+        frame = os.path.join(workdir, 'frame.png')
+        pixels = settled_frame(display, frame, start, args.timeout)
         seconds = time.monotonic() - start
         os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
         shutil.copyfile(frame, args.out)

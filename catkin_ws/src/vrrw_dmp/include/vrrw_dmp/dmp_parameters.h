@@ -10,7 +10,7 @@ enum class AmplitudeScaling
 {
   goal_offset,     ///< (g - x0), equation 2 of the paper; the forcing term vanishes when g == x0
   demo_amplitude,  ///< the demonstration's range max(x) - min(x): a joint that returns to its start is kept
-  automatic,       ///< demo_amplitude for the joints where g == x0 (see Dmp), goal_offset elsewhere
+  automatic,       ///< demo_amplitude for the joints where g == x0 (see Dmp) or that hardly move, goal_offset elsewhere
 };
 
 /// \brief "goal", "amplitude" or "auto".
@@ -31,6 +31,10 @@ struct DmpParameters
   std::optional<double> D;       ///< damping; unset means critically damped, 2 sqrt(K)
   AmplitudeScaling scaling = AmplitudeScaling::goal_offset;
   double degenerate_ratio = 0.05;  ///< |g - x0| below this fraction of the demo's range counts as g == x0
+  /// rad (m): with automatic scaling, a joint the demonstration moves less than this is scaled by its range
+  /// too: its drift is not a motion to stretch to a new goal (a 3 mrad drift to a goal 80 mrad away would
+  /// be mirrored and amplified 25 times). 0: off.
+  double still_range = 0.0;
   std::size_t derivative_half_window = 3;  ///< the local quadratic fit uses 2m+1 samples
 
   /// \brief D, or 2 sqrt(K) when D is unset.

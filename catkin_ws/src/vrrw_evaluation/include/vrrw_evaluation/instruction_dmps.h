@@ -26,10 +26,15 @@ public:
   /// rad: a rollout past tau this close to its goal ends there (at rest 0.2 s later).
   static constexpr double kSettledWithin = 3e-3;
 
+  /// Fraction of a joint's velocity limit a rollout may reach before it is slowed down.
+  static constexpr double kVelocityMargin = 0.9;
+
   /// \brief The instruction's motion from `start` to `goal` at the demonstrated speed, sampled every dt;
-  /// ends exactly at `goal`, at rest.
+  /// ends exactly at `goal`, at rest. With `max_velocity` (per joint), a rollout that a new goal makes faster
+  /// than kVelocityMargin of a limit is slowed down as a whole (a larger tau: the same path, later).
   vrrw_trajectory::JointTrajectory rollout(const std::string& instruction, const std::vector<double>& start,
-                                           const std::vector<double>& goal, double dt = 0.01) const;
+                                           const std::vector<double>& goal, double dt = 0.01,
+                                           const std::vector<double>& max_velocity = {}) const;
 
 private:
   std::vector<std::string> names_;

@@ -56,6 +56,7 @@ void PickPlaceDemo::generalize(const Demonstration& demo, DemoReport& report)
   vrrw_dmp::DmpParameters parameters;
   parameters.basis_count = 30;
   parameters.scaling = vrrw_dmp::AmplitudeScaling::automatic;
+  parameters.still_range = 0.02;  // rad: a wrist that merely drifts while the arm carries stays put
   const InstructionDmps dmps(demo, parameters);
   for (const std::string& name : dmps.instructions())
     report.dmp_fit_rmse_rad[name] = dmps.fitRmse(name);
@@ -89,7 +90,7 @@ void PickPlaceDemo::generalize(const Demonstration& demo, DemoReport& report)
             return seen.gripper_open_at_end = client_.grip(demo.finger_open, 0.0, e);
           if (name == "move_to_final")
             goals[name] = placeGoal(goals[name], trial.ik_ms);
-          return client_.execute(dmps.rollout(name, client_.armJoints(), goals.at(name)), e);
+          return client_.execute(dmps.rollout(name, client_.armJoints(), goals.at(name), 0.01, client_.maxVelocities()), e);
         });
       Recording recording;
       std::vector<Segment> segments;

@@ -41,8 +41,8 @@ double distance(const std::vector<double>& a, const std::vector<double>& b)
 }
 }  // namespace
 
-PickPlaceDemo::PickPlaceDemo(WorkspaceClient& client, DemoOptions options)
-  : client_(client), options_(std::move(options))
+PickPlaceDemo::PickPlaceDemo(WorkspaceClient& client, GhostOperator& ghost, DemoOptions options)
+  : client_(client), ghost_(ghost), options_(std::move(options))
 {
   std::filesystem::create_directories(options_.out + "/data");
   std::filesystem::create_directories(options_.out + "/frames");
@@ -107,7 +107,8 @@ bool PickPlaceDemo::goHome(std::string& error)
 
 bool PickPlaceDemo::resetObject(const Eigen::Isometry3d& pose, std::string& error)
 {
-  if (!goHome(error) || !client_.placeObject(pose, error))
+  // Open first: a trial that failed holding the drill must not carry it home nor close on it again.
+  if (!client_.grip(options_.grasp.finger_open, 0.0, error) || !goHome(error) || !client_.placeObject(pose, error))
     return false;
   ros::WallDuration(0.3).sleep();  // the drill settles on the table
   return true;
@@ -165,42 +166,34 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   Eigen::Isometry3d above_place = place;
   above_place.translation().z() = near_pick.translation().z();
   double plan_ms = 0.0;
-  const std::string robot = "/" + client_.robot().name;
+  const std::string robot = "/" + client_.robot().name, gripper = robot + "/gripper_controller/gripper_cmd";
   const std::vector<std::string> by_joints = { robot + "/compute_ik", robot + "/arm_controller/follow_joint_trajectory" };
-  const std::vector<std::string> by_gripper = { robot + "/gripper_controller/gripper_cmd" };
   report.teach_interfaces.clear();
   auto used = [&](const std::vector<std::string>& interfaces) {
     report.teach_interfaces.push_back({ kInstructions[report.teach_interfaces.size()], interfaces });
   };
-  // Ghost-drive: via a waypoint halfway from the TCP at home to near-pick, then down to the grasp. A
-  // waypoint off that line (e.g. above near-pick) makes joints go and come back, which the DMPs' amplitude
-  // scaling magnifies for new goals (the arm then swept through the drill).
+  auto drive = [&](const std::vector<Eigen::Isometry3d>& waypoints, const Eigen::Isometry3d& goal, std::string& e) {
+    const bool ok = ghost_.drive(waypoints, goal, e, &plan_ms);
+    return used(ghost_.takeUsed()), ok;
+  };
+  auto grip = [&](double position, double force, std::string& e) {
+    return used({ gripper }), client_.grip(position, force, e);
+  };
+  // The approach is a ghost-drive with waypoints; stops at waypoints on a line keep the motion straight and
+  // slow enough to replay. The approach goes via a waypoint halfway from the TCP at home to near-pick: one
+  // off that line (e.g. above near-pick) makes joints go and come back, which the DMPs' amplitude scaling
+  // magnifies for new goals (the arm then swept through the drill).
   const Eigen::Isometry3d halfway = interpolatePose(client_.tcpPose(), near_pick, 0.5);
   const std::vector<Instruction> script = {
+    [&](std::string& e) { return drive({ halfway }, near_pick, e); },
     [&](std::string& e) {
-      if (ghost_)
-      {
-        const bool ok = ghost_->drive({ halfway }, near_pick, e, &plan_ms);
-        return used(ghost_->takeUsed()), ok;
-      }
-      used({ robot + "/compute_ik", robot + "/plan", robot + "/arm_controller/follow_joint_trajectory" });
-      const auto q = client_.ik(near_pick, home_, true, e);
-      auto planned = q ? client_.plan(*q, e, &plan_ms) : std::nullopt;
-      return planned && client_.execute(*planned, e);
+      return drive({ interpolatePose(near_pick, pick, 1.0 / 3.0), interpolatePose(near_pick, pick, 2.0 / 3.0) },
+                   pick, e);
     },
-    [&](std::string& e) {
-      if (ghost_)
-      {
-        // Two waypoints on the line down: stops there keep the descent straight and slow enough to replay.
-        const bool ok = ghost_->drive({ interpolatePose(near_pick, pick, 1.0 / 3.0),
-                                        interpolatePose(near_pick, pick, 2.0 / 3.0) },
-                                      pick, e, &plan_ms);
-        return used(ghost_->takeUsed()), ok;
-      }
-      return used(by_joints), moveLinear({ { pick, 1.2 } }, e);
-    },
-    [&](std::string& e) { return used(by_gripper), client_.grip(grasp.finger_closed, grasp.grip_force, e); },
-    // The carry stays TCP lines by IK until ghost plans accept a start holding the drill.
+    [&](std::string& e) { return grip(grasp.finger_closed, grasp.grip_force, e); },
+    // The carry stays TCP lines by IK (minimum jerk): ghost plans are refused for a goal that presses the
+    // held drill onto the table, and a drill released from above while it swings in the two-finger grip
+    // (accelerations of a planned carry swing it) topples.
     [&](std::string& e) { return used(by_joints), moveLinear({ { near_pick, 1.0 } }, e); },
     [&](std::string& e) {
       used(by_joints);
@@ -208,7 +201,7 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
       object_released_ = client_.objectPose();
       return placed;
     },
-    [&](std::string& e) { return used(by_gripper), client_.grip(grasp.finger_open, 0.0, e); },
+    [&](std::string& e) { return grip(grasp.finger_open, 0.0, e); },
   };
   Recording recording;
   demo = Demonstration();
@@ -219,9 +212,8 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   demo.finger_closed = grasp.finger_closed;
   demo.finger_open = grasp.finger_open;
   demo.grip_force = grasp.grip_force;
-  report.teach_source = ghost_ ? "scripted operator: ghost-drive to near-pick and to the grasp, GripperCommand; "
-                                  "the carry by TCP lines by IK"
-                                : "scripted: planned near-pick, TCP lines by IK, GripperCommand";
+  report.teach_source = "scripted operator: ghost-drive with waypoints to near-pick and to the grasp, GripperCommand; "
+                        "the carry by TCP lines by IK";
   report.teach_seconds = recording.seconds;
   report.segments = demo.segments;
   report.plan_ms = plan_ms;

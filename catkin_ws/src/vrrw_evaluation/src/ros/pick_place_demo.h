@@ -31,12 +31,11 @@ struct DemoOptions
 class PickPlaceDemo
 {
 public:
-  PickPlaceDemo(WorkspaceClient& client, DemoOptions options);
+  /// \brief `ghost`: the operator's ghost-drive (the interaction node's services), the only way the
+  /// demonstration moves the arm.
+  PickPlaceDemo(WorkspaceClient& client, GhostOperator& ghost, DemoOptions options);
 
-  /// \brief Teach the approach and the grasp by ghost-drive (the interaction node's services); null:
-  /// by the planning services and TCP lines.
-  void useGhost(GhostOperator* ghost) { ghost_ = ghost; }
-  /// \brief The scripted demonstration: near-pick (planned), pick, close, back, carry and lower, open.
+  /// \brief The scripted demonstration: near-pick, pick, close, back, carry and lower, open.
   bool teach(Demonstration& demo, DemoReport& report, std::string& error);
   /// \brief Direct imitation of every instruction from the reset scene; errors into `report`.
   bool replay(const Demonstration& demo, DemoReport& report, std::string& error);
@@ -58,7 +57,7 @@ private:
   void writeRecording(const std::string& row, const Recording& recording, const std::vector<Segment>& segments);
 
   WorkspaceClient& client_;
-  GhostOperator* ghost_ = nullptr;
+  GhostOperator& ghost_;
   DemoOptions options_;
   std::vector<double> home_;
   Eigen::Isometry3d object_start_ = Eigen::Isometry3d::Identity();

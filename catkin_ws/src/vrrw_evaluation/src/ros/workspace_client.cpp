@@ -1,5 +1,7 @@
 #include "workspace_client.h"
 
+#include <vrrw_kinematics/robot_model.h>
+
 #include <tf2_eigen/tf2_eigen.h>
 #include <cstdio>
 #include <vrrw_msgs/ComputeIK.h>
@@ -15,6 +17,16 @@ namespace vrrw_evaluation
 {
 namespace
 {
+/// A service call that survives one dropped connection (a node's call fails when its connection to the
+/// server breaks, as seen once in a 20-trial run): wait for the service, then one more try.
+template <class Service>
+bool callTwice(ros::ServiceClient& client, Service& srv)
+{
+  if (client.call(srv))
+    return true;
+  ROS_WARN_STREAM("demo: " << client.getService() << " did not answer; calling once more");
+  return client.waitForExistence(ros::Duration(2.0)) && client.call(srv);
+}
 trajectory_msgs::JointTrajectory toMsg(const vrrw_trajectory::JointTrajectory& trajectory)
 {
   trajectory_msgs::JointTrajectory msg;
@@ -70,6 +82,18 @@ bool WorkspaceClient::waitUntilReady(double seconds, std::string& error)
     return error = "no planning node (/" + robot_.name + "/compute_ik, /plan)", false;
   if (!place_.waitForExistence(left()))
     return error = "no physics node (/physics/set_object_pose): the demo runs in physics mode", false;
+  std::string urdf;
+  if (!node_.getParam("/robot_description", urdf))
+    return error = "no /robot_description", false;
+  const auto model = vrrw_kinematics::RobotModel::fromUrdf(urdf);
+  max_velocity_.clear();
+  for (const std::string& joint : robot_.arm_joints)
+  {
+    const int index = model.jointIndex(joint);
+    if (index < 0)
+      return error = "/robot_description has no joint " + joint, false;
+    max_velocity_.push_back(model.joints()[std::size_t(index)].max_velocity);
+  }
   while (ros::WallTime::now() < deadline)
   {
     if (!armJoints().empty() && lookup(object_) && lookup(robot_.tcp_link))
@@ -149,7 +173,7 @@ std::optional<std::vector<double>> WorkspaceClient::ik(const Eigen::Isometry3d& 
   srv.request.timeout = 0.05;
   srv.request.avoid_collisions = avoid_collisions;
   const ros::WallTime start = ros::WallTime::now();
-  const bool called = ik_.call(srv);
+  const bool called = callTwice(ik_, srv);
   if (ik_ms)
     *ik_ms += (ros::WallTime::now() - start).toSec() * 1000.0;
   if (!called)
@@ -174,7 +198,7 @@ std::optional<vrrw_trajectory::JointTrajectory> WorkspaceClient::plan(const std:
   srv.request.goal_joints = jointState(robot_.arm_joints, goal);
   srv.request.time_limit = 2.0;
   srv.request.seed = 1;
-  if (!plan_.call(srv))
+  if (!callTwice(plan_, srv))
     return error = "plan did not answer", std::nullopt;
   if (srv.response.error_code != 0)
     return error = srv.response.message, std::nullopt;
@@ -192,7 +216,7 @@ bool WorkspaceClient::placeObject(const Eigen::Isometry3d& pose, std::string& er
   vrrw_physics::SetObjectPose srv;
   srv.request.object = object_;
   srv.request.pose = tf2::toMsg(pose);
-  if (!place_.call(srv) || !srv.response.success)
+  if (!callTwice(place_, srv) || !srv.response.success)
     return error = "set_object_pose: " + srv.response.message, false;
   for (int i = 0; i < 100; ++i)
   {

@@ -80,6 +80,8 @@ public:
   double realTimeFactor() const;
 
   const vrrw_scene::Robot& robot() const { return robot_; }
+  /// \brief The arm joints' URDF velocity limits (rad/s), in arm_joints order; read by waitUntilReady().
+  const std::vector<double>& maxVelocities() const { return max_velocity_; }
 
 private:
   void onJointStates(const sensor_msgs::JointState::ConstPtr& msg);
@@ -102,6 +104,7 @@ private:
 
   mutable std::mutex mutex_;
   std::vector<double> latest_;
+  std::vector<double> max_velocity_;
   bool recording_ = false;
   ros::Time record_start_;  ///< physics stamps joint_states with the same clock
   Recording recording_data_;

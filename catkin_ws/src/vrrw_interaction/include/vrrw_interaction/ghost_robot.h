@@ -54,7 +54,8 @@ public:
 
   /// \brief Collision-free from the robot (its arm in `world_state`) through every waypoint in order to the
   /// ghost; kept as the last plan when it succeeds. time_limit <= 0: 1 s.
-  vrrw_kinematics::TrajectoryResult plan(const Eigen::VectorXd& world_state, double time_limit);
+  vrrw_kinematics::TrajectoryResult plan(const Eigen::VectorXd& world_state, double time_limit,
+                                         const vrrw_kinematics::SpeedScaling& scaling = {});
   /// \brief The last successful plan, if any.
   const std::optional<vrrw_trajectory::JointTrajectory>& lastPlan() const { return last_plan_; }
   /// \brief Forgets the last plan (it was executed, or the robot moved away from its start).

@@ -11,12 +11,24 @@
 namespace vrrw_kinematics
 {
 /// \brief A motion from the start through joint-space waypoints, in order, to the goal.
+/// \brief Fractions (0, 1] of the joint velocity and acceleration limits a trajectory is timed with, as
+/// MoveIt's max_velocity_scaling_factor and max_acceleration_scaling_factor.
+struct SpeedScaling
+{
+  double velocity = 1.0;
+  double acceleration = 1.0;
+};
+
+/// \brief The scaling of a service request's two factors, where 0 (an unset field) means 1.
+SpeedScaling speedScaling(double max_velocity_scaling_factor, double max_acceleration_scaling_factor);
+
 struct TrajectoryRequest
 {
   /// Start, goal (joint values or a pose of the planner's tip), planner, seed; time_limit covers every leg.
   PlanRequest plan;
   /// Joint values visited in order between the start and the goal; the trajectory stops at each one.
   std::vector<Eigen::VectorXd> waypoints;
+  SpeedScaling scaling;
 };
 
 /// \brief A timed trajectory through every waypoint, or which waypoint failed and why.
