@@ -192,6 +192,8 @@ bool PhysicsWorld::step()
            << " s: holding the last target positions at rest";
       reports_.push_back(line.str());
     }
+    else
+      e.drives->advance(time_);
   applyJointTorques();
   for (std::string& line : operator_->apply())
     reports_.push_back(std::move(line));

@@ -30,6 +30,7 @@ RobotDrives::RobotDrives(const vrrw_scene::Robot& spec, ArticulatedRobot& robot,
 {
   const auto& joints = robot.joints();
   joint_of_drive_.resize(robot.drives().size());
+  streamed_.resize(robot.drives().size());
   for (std::size_t j = 0; j < joints.size(); ++j)
     if (joints[j].drive >= 0)
       joint_of_drive_[std::size_t(joints[j].drive)] = j;
@@ -91,7 +92,9 @@ void RobotDrives::setTargets(const std::vector<std::string>& joints, const std::
   for (std::size_t i = 0; i < joints.size(); ++i)
   {
     JointDrive& d = *robot_.drives()[drives[i]];
-    d.setTarget(positions[i], velocities.empty() ? 0.0 : velocities[i]);
+    const double velocity = velocities.empty() ? 0.0 : velocities[i];
+    d.setTarget(positions[i], velocity);
+    streamed_[drives[i]] = { true, positions[i], velocity, now };
     const double limit = force_limit_[drives[i]];
     d.setForceLimit(!efforts.empty() && efforts[i] > 0.0 ? std::min(efforts[i], limit) : limit);
   }
@@ -103,10 +106,22 @@ bool RobotDrives::holdIfStale(double now, double timeout)
 {
   if (!streaming_ || timeout <= 0.0 || now - last_targets_ <= timeout)
     return false;
-  for (auto& d : robot_.drives())
-    d->setTarget(d->targetPosition(), 0.0);
+  // at the last targets' own positions: not carried on along a velocity nobody confirms any more
+  for (std::size_t d = 0; d < robot_.drives().size(); ++d)
+    robot_.drives()[d]->setTarget(streamed_[d].active ? streamed_[d].position : robot_.drives()[d]->targetPosition(), 0.0);
+  endStream();
   streaming_ = false;
   return true;
+}
+
+void RobotDrives::advance(double now)
+{
+  for (std::size_t d = 0; d < streamed_.size(); ++d)
+    if (streamed_[d].active && streamed_[d].velocity != 0.0)
+    {
+      const double ahead = std::clamp(now - streamed_[d].time, 0.0, kTargetExtrapolation);
+      robot_.drives()[d]->setTarget(streamed_[d].position + streamed_[d].velocity * ahead, streamed_[d].velocity);
+    }
 }
 
 void RobotDrives::setMode(DriveMode mode)
@@ -164,6 +179,7 @@ void RobotDrives::reset(DriveMode mode)
   mode_ = mode;
   applyMode();
   streaming_ = false;
+  endStream();
 }
 
 void RobotDrives::applyMode()
@@ -185,6 +201,9 @@ void RobotDrives::holdArm()
   const std::vector<double> q = robot_.positions();
   for (std::size_t d = 0; d < config_.size(); ++d)
     if (arm_[d])
+    {
       robot_.drives()[d]->setTarget(q[joint_of_drive_[d]], 0.0);
+      streamed_[d] = Streamed();
+    }
 }
 }  // namespace vrrw_physics

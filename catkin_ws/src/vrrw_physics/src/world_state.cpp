@@ -50,6 +50,7 @@ void PhysicsWorld::restoreMotion(const WorldState& s)
     robot.setState(s.positions[r], s.velocities[r]);
     for (std::size_t d = 0; d < robot.drives().size(); ++d)
       robot.drives()[d]->setTarget(s.target_positions[r][d], s.target_velocities[r][d]);
+    robots_[r].drives->endStream();
   }
   for (std::size_t o = 0; o < objects_.size() && o < s.object_poses.size(); ++o)
   {

@@ -23,6 +23,9 @@ public:
   /// velocities beyond `max_speed` (rad/s or m/s: the world's guard limit) are refused.
   RobotDrives(const vrrw_scene::Robot& spec, ArticulatedRobot& robot, DriveMode mode, double max_speed);
 
+  /// s a streamed target is carried along its velocity without a newer one (first-order hold).
+  static constexpr double kTargetExtrapolation = 0.05;
+
   /// \brief Targets by prefixed joint name at simulated time `now`. velocities empty: 0. efforts empty or 0:
   /// the configured force limit; efforts > 0 lower it (N m or N, capped at the configured limit) until the
   /// next targets for that joint. Throws InputError naming the joint and the range; nothing is applied then.
@@ -33,6 +36,13 @@ public:
   /// the targets that should follow it, while a position target is a whole command (a script's one-shot target
   /// must still be reached, a gripper must keep squeezing what it holds). true at the step it happens.
   bool holdIfStale(double now, double timeout);
+  /// \brief Before a step at `now`: each streamed target position moves on along its target velocity from
+  /// where and when it arrived, for up to kTargetExtrapolation. A controller's targets arrive asynchronously;
+  /// a late one (the controller descheduled, or physics catching up with the wall clock) would otherwise
+  /// leave the drive pulling towards where the arm should have been, v * delay behind.
+  void advance(double now);
+  /// \brief Streamed targets end here (their positions and velocities stay as they are): a restored state.
+  void endStream() { streamed_.assign(streamed_.size(), Streamed()); }
 
   void setMode(DriveMode mode);
   DriveMode mode() const { return mode_; }
@@ -62,5 +72,11 @@ private:
   std::vector<std::string> arm_joints_;
   double last_targets_ = 0.0;
   bool streaming_ = false;
+  struct Streamed
+  {
+    bool active = false;
+    double position = 0.0, velocity = 0.0, time = 0.0;  ///< as the last targets gave it, at their arrival
+  };
+  std::vector<Streamed> streamed_;  ///< per drive
 };
 }  // namespace vrrw_physics
