@@ -1,4 +1,5 @@
 #include <vrrw_evaluation/pick_place_task.h>
+#include <vrrw_kinematics/top_grasp.h>
 
 namespace vrrw_evaluation
 {
@@ -9,16 +10,7 @@ bool isGripperInstruction(const std::string& name)
 
 Eigen::Isometry3d tcpAtGrasp(const Eigen::Isometry3d& drill, const GraspGeometry& grasp)
 {
-  Eigen::Matrix3d tool;
-  tool.col(2) = -Eigen::Vector3d::UnitZ();
-  Eigen::Vector3d across = drill.rotation().col(1);
-  across.z() = 0.0;
-  tool.col(1) = across.normalized();
-  tool.col(0) = tool.col(1).cross(tool.col(2));
-  Eigen::Isometry3d tcp = Eigen::Isometry3d::Identity();
-  tcp.linear() = tool;
-  tcp.translation() = drill * grasp.grasp_point;
-  return tcp;
+  return vrrw_kinematics::topGrasp(drill, grasp.grasp_point);
 }
 
 Eigen::Isometry3d tcpAtNearPick(const Eigen::Isometry3d& drill, const GraspGeometry& grasp)

@@ -5,6 +5,7 @@
 #include <control_msgs/GripperCommandAction.h>
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
 #include <vrrw_msgs/GhostExecute.h>
+#include <vrrw_kinematics/top_grasp.h>
 #include <vrrw_msgs/GhostPlan.h>
 #include <vrrw_msgs/GhostPreset.h>
 #include <vrrw_msgs/GhostSetPose.h>
@@ -125,15 +126,8 @@ namespace
 /// The TCP over the drill's housing, fingers across it (vrrw_evaluation's grasp), `above` m higher.
 Eigen::Isometry3d tcpOverDrill(const Eigen::Isometry3d& drill, double above)
 {
-  Eigen::Matrix3d tool;
-  tool.col(2) = -Eigen::Vector3d::UnitZ();
-  Eigen::Vector3d across = drill.rotation().col(1);
-  across.z() = 0.0;
-  tool.col(1) = across.normalized();
-  tool.col(0) = tool.col(1).cross(tool.col(2));
-  Eigen::Isometry3d tcp = Eigen::Isometry3d::Identity();
-  tcp.linear() = tool;
-  tcp.translation() = drill * Eigen::Vector3d(0.03, 0.0, 0.203) + Eigen::Vector3d(0, 0, above);
+  Eigen::Isometry3d tcp = vrrw_kinematics::topGrasp(drill, Eigen::Vector3d(0.03, 0.0, 0.203));
+  tcp.translation().z() += above;
   return tcp;
 }
 
