@@ -51,25 +51,6 @@ def stop(processes):
                 pass
 
 
-def run_runner(command, env):
-    """demo_runner with its stderr passed on, except tf2's TF_REPEATED_DATA pairs of lines: the ghost frames
-    are re-sent with an unchanged simulated stamp, which says nothing about the demo."""
-    process = subprocess.Popen(command, env=env, stderr=subprocess.PIPE, text=True)
-    skipped, skip_next = 0, False
-    for line in process.stderr:
-        if 'TF_REPEATED_DATA' in line:
-            skipped, skip_next = skipped + 1, True
-        elif skip_next and line.lstrip().startswith('at line'):
-            skip_next = False
-        else:
-            skip_next = False
-            sys.stderr.write(line)
-    process.wait()
-    if skipped:
-        log(f'{skipped} tf2 TF_REPEATED_DATA warnings (frames re-sent with an unchanged stamp) not shown')
-    return process
-
-
 def demo_config(path):
     """The render's rviz config with the demo's view, drawn at 10 Hz (llvmpipe shares the 2 cores)."""
     import yaml
@@ -143,8 +124,8 @@ def main():
             sys.exit(f'demo: {error} (see {launch_log})')
         log(f'workspace up after {time.monotonic() - start:.1f} s')
         capture = f'import -display :{display} -window root {{file}}'
-        result = run_runner([runner, '--scene', args.scene, '--trials', str(trials), '--seed', str(args.seed),
-                             '--out', out, '--shown', '1' if args.quick else '2', '--capture', capture], env)
+        result = subprocess.run([runner, '--scene', args.scene, '--trials', str(trials), '--seed', str(args.seed),
+                                 '--out', out, '--shown', '1' if args.quick else '2', '--capture', capture], env=env)
     finally:
         stop(processes)
         shutil.rmtree(workdir, ignore_errors=True)

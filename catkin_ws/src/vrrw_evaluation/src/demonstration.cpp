@@ -52,6 +52,14 @@ JointTrajectory slice(const JointTrajectory& trajectory, double start, double en
   return out;
 }
 
+double largestJointDifference(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double largest = 0.0;
+  for (std::size_t j = 0; j < a.size() && j < b.size(); ++j)
+    largest = std::max(largest, std::abs(a[j] - b[j]));
+  return largest;
+}
+
 double jointRms(const JointTrajectory& reference, const JointTrajectory& measured)
 {
   if (reference.points.empty() || measured.points.empty())

@@ -40,6 +40,8 @@ std::vector<double> positionsAt(const vrrw_trajectory::JointTrajectory& trajecto
 /// \brief Root mean square over joints and samples of `reference` of the difference to `measured` at the
 /// same time from its start (measured interpolated; both start at their first sample).
 double jointRms(const vrrw_trajectory::JointTrajectory& reference, const vrrw_trajectory::JointTrajectory& measured);
+/// \brief max_j |a_j - b_j| over the joints both have (rad).
+double largestJointDifference(const std::vector<double>& a, const std::vector<double>& b);
 /// \brief The samples at least `period` apart, and the last, velocities kept: a recording as one goal.
 vrrw_trajectory::JointTrajectory thin(const vrrw_trajectory::JointTrajectory& trajectory, double period);
 }  // namespace vrrw_evaluation

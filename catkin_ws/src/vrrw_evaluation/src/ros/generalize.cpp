@@ -10,14 +10,6 @@ namespace vrrw_evaluation
 {
 namespace
 {
-double distance(const std::vector<double>& a, const std::vector<double>& b)
-{
-  double largest = 0.0;
-  for (std::size_t j = 0; j < a.size() && j < b.size(); ++j)
-    largest = std::max(largest, std::abs(a[j] - b[j]));
-  return largest;
-}
-
 /// The arm goal of each arm instruction for a drill standing at `object`, through IK seeded with the
 /// demonstrated goal (same branch); near-pick must be collision-free, pick puts the fingers around it.
 bool transferGoals(WorkspaceClient& client, const Demonstration& demo, const Eigen::Isometry3d& object,
@@ -46,7 +38,7 @@ std::vector<double> PickPlaceDemo::placeGoal(const std::vector<double>& demonstr
   const Eigen::Isometry3d held = client_.tcpPose().inverse() * client_.objectPose();
   std::string error;
   const auto goal = client_.ik(object_released_ * held.inverse(), demonstrated, false, error, &ik_ms);
-  if (!goal || distance(*goal, demonstrated) > 0.3)
+  if (!goal || largestJointDifference(*goal, demonstrated) > 0.3)
     return demonstrated;
   return *goal;
 }

@@ -31,14 +31,6 @@ void addVelocities(vrrw_trajectory::JointTrajectory& trajectory)
       p[k].velocities[j] = (p[k + 1].positions[j] - p[k - 1].positions[j]) / (p[k + 1].time - p[k - 1].time);
   }
 }
-
-double distance(const std::vector<double>& a, const std::vector<double>& b)
-{
-  double largest = 0.0;
-  for (std::size_t j = 0; j < a.size() && j < b.size(); ++j)
-    largest = std::max(largest, std::abs(a[j] - b[j]));
-  return largest;
-}
 }  // namespace
 
 PickPlaceDemo::PickPlaceDemo(WorkspaceClient& client, GhostOperator& ghost, DemoOptions options)
@@ -77,7 +69,7 @@ bool PickPlaceDemo::moveLinear(const std::vector<std::pair<Eigen::Isometry3d, do
 
 bool PickPlaceDemo::goHome(std::string& error)
 {
-  if (home_.empty() || distance(client_.armJoints(), home_) < 1e-3)
+  if (home_.empty() || largestJointDifference(client_.armJoints(), home_) < 1e-3)
     return true;
   Eigen::Isometry3d up = client_.tcpPose();
   up.translation().z() += 0.10;
