@@ -55,6 +55,13 @@ GhostInterface::GhostInterface(WorldView& view, const vrrw_scene::Robot& robot, 
         res.success = o.success, res.message = o.message;
         return true;
       }));
+  services_.push_back(
+      nh.advertiseService<vrrw_msgs::GhostSupportSurface::Request, vrrw_msgs::GhostSupportSurface::Response>(
+          "set_support_surface", [this](auto& req, auto& res) {
+            const Outcome o = supportSurface(req.name);
+            res.success = o.success, res.message = o.message;
+            return true;
+          }));
   const auto trigger = [&](const std::string& name, std::function<Outcome()> request) {
     services_.push_back(nh.advertiseService<std_srvs::Trigger::Request, std_srvs::Trigger::Response>(
         name, [request](auto&, auto& res) {
@@ -236,6 +243,27 @@ Outcome GhostInterface::gripper(bool close)
   gripper_action_.sendGoal(goal);
   view_.event(robot_, close ? "gripper_close" : "gripper_open", "");
   return { true, close ? "closing" : "opening" };
+}
+
+Outcome GhostInterface::supportSurface(const std::string& name)
+{
+  std::lock_guard<std::mutex> lock(view_.mutex());
+  if (!name.empty() && !view_.scene().object(name))
+  {
+    std::string objects;
+    for (const vrrw_scene::Object& object : view_.scene().objects)
+      objects += (objects.empty() ? "" : ", ") + object.name;
+    return { false, "name: '" + name + "' is not an object of the scene (" + objects + ")" };
+  }
+  if (!name.empty() && view_.world().bodyIndex(name) < 0)
+    return { false, "name: '" + name + "' has no collision geometry to set anything down on" };
+  support_surface_ = name;
+  if (name.empty())
+    ghost_.place_contact = nullptr;
+  else
+    ghost_.place_contact = [this](bool allow) { view_.allowPlaceContact(robot_, support_surface_, allow); };
+  view_.event(robot_, "support_surface", name);
+  return { true, name.empty() ? "no support surface" : "held objects may be set down on " + name };
 }
 
 bool GhostInterface::onPlan(vrrw_msgs::GhostPlan::Request& req, vrrw_msgs::GhostPlan::Response& res)

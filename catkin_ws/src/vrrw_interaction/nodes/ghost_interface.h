@@ -10,6 +10,7 @@
 #include <vrrw_msgs/GhostPreset.h>
 #include <vrrw_msgs/GhostSetJoints.h>
 #include <vrrw_msgs/GhostSetPose.h>
+#include <vrrw_msgs/GhostSupportSurface.h>
 
 #include <vrrw_interaction/ghost_robot.h>
 
@@ -50,6 +51,8 @@ public:
   /// \brief Sends the last plan; waits for the action's result when `result` is given.
   Outcome execute(control_msgs::FollowJointTrajectoryResult* result = nullptr);
   Outcome gripper(bool close);
+  /// \brief The scene object the held object may be set down on ("" = none); refused for an unknown one.
+  Outcome supportSurface(const std::string& name);
 
 private:
   bool onSetJoints(vrrw_msgs::GhostSetJoints::Request& req, vrrw_msgs::GhostSetJoints::Response& res);
@@ -65,6 +68,7 @@ private:
   GhostRobot ghost_;
   std::vector<std::string> gripper_joints_;
   double gripper_open_ = 0.0, gripper_closed_ = 0.0;
+  std::string support_surface_;
   vrrw_trajectory::JointTrajectory preview_;
   ros::WallTime preview_start_;
   ros::Publisher joint_states_;

@@ -243,6 +243,23 @@ void WorldView::publishGhostFrames(const Eigen::VectorXd& ghost_state)
   broadcaster_.sendTransform(frames);
 }
 
+void WorldView::allowPlaceContact(const std::string& robot, const std::string& surface, bool allow)
+{
+  if (!allow)
+  {
+    for (const auto& [object, other] : place_contacts_)
+      world_.setAllowed(object, other, false);
+    place_contacts_.clear();
+    return;
+  }
+  for (const auto& [object, held] : held_)
+    if (held.robot == robot && object != surface && !world_.acm().allowed(object, surface))
+    {
+      world_.setAllowed(object, surface, true);
+      place_contacts_.emplace_back(object, surface);
+    }
+}
+
 void WorldView::event(const std::string& robot, const std::string& kind, const std::string& detail)
 {
   vrrw_msgs::Event msg;

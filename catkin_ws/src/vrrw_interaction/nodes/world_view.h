@@ -35,6 +35,9 @@ public:
   Eigen::Isometry3d poseInWorld(const geometry_msgs::PoseStamped& pose, const std::string& field = "pose") const;
   /// \brief Publishes every link at `ghost_state` as tf frame ghost/<link> (rviz: RobotModel with TF prefix ghost).
   void publishGhostFrames(const Eigen::VectorXd& ghost_state);
+  /// \brief While `allow`: every object `robot` holds may touch the scene object `surface` (mutex held);
+  /// false takes back exactly what true allowed.
+  void allowPlaceContact(const std::string& robot, const std::string& surface, bool allow);
   /// \brief One vrrw_msgs/Event on /operator/events.
   void event(const std::string& robot, const std::string& kind, const std::string& detail);
 
@@ -68,6 +71,7 @@ private:
   tf2_ros::TransformBroadcaster broadcaster_;
   ros::Time last_ghost_stamp_;
   std::map<std::string, Held> held_;                          ///< by object
+  std::vector<std::pair<std::string, std::string>> place_contacts_;  ///< pairs allowPlaceContact allowed
   std::map<std::string, std::vector<std::string>> gripper_links_;  ///< by robot: the links below its flange
   ros::Subscriber joint_states_, contacts_;
   ros::Publisher events_;

@@ -17,6 +17,43 @@ std::string fixed(double value, int digits)
   out << std::fixed << std::setprecision(digits) << value;
   return out.str();
 }
+
+/// Holds the place contact allowed for one check or plan.
+class PlaceContact
+{
+public:
+  explicit PlaceContact(const std::function<void(bool)>& allow) : allow_(allow)
+  {
+    if (allow_)
+      allow_(true);
+  }
+  ~PlaceContact()
+  {
+    if (allow_)
+      allow_(false);
+  }
+  PlaceContact(const PlaceContact&) = delete;
+  PlaceContact& operator=(const PlaceContact&) = delete;
+
+private:
+  const std::function<void(bool)>& allow_;
+};
+
+/// `last` appended to `first`: it starts where `first` ends, at rest.
+void append(vrrw_kinematics::TrajectoryResult& first, const vrrw_kinematics::TrajectoryResult& last)
+{
+  const double offset = first.trajectory.points.back().time;
+  for (std::size_t k = 1; k < last.trajectory.points.size(); ++k)
+  {
+    first.trajectory.points.push_back(last.trajectory.points[k]);
+    first.trajectory.points.back().time += offset;
+  }
+  for (const double t : last.waypoint_times)
+    first.waypoint_times.push_back(t + offset);
+  first.path.insert(first.path.end(), last.path.begin() + std::min<std::ptrdiff_t>(1, last.path.size()), last.path.end());
+  first.planning_time += last.planning_time;
+  first.path_length += last.path_length;
+}
 }  // namespace
 
 std::string ikRefusal(const vrrw_kinematics::IkResult& ik)
@@ -48,7 +85,12 @@ Outcome GhostRobot::moveTo(const Eigen::VectorXd& q, const Eigen::VectorXd& worl
 {
   if (const std::string violation = arm_.bounds().violation(q); !violation.empty())
     return { false, what + ": " + violation };
-  if (const vrrw_kinematics::Contact contact = arm_.check(q, world_state); contact.collision)
+  vrrw_kinematics::Contact contact;
+  {
+    const PlaceContact place(place_contact);
+    contact = arm_.check(q, world_state);
+  }
+  if (contact.collision)
     return { false, what + ": collision: " + contact.body_a + " - " + contact.body_b };
   q_ = q;
   return { true, what };
@@ -92,7 +134,11 @@ Outcome GhostRobot::setPose(const Eigen::Isometry3d& target, const Eigen::Vector
   vrrw_kinematics::IkOptions options;
   options.max_jump = max_jump;
   options.timeout = 0.003;  // numeric chains at drag rate; a closed form answers in microseconds
-  const vrrw_kinematics::IkResult ik = arm_.solveCollisionFree(target, q_, world_state, options);
+  vrrw_kinematics::IkResult ik;
+  {
+    const PlaceContact place(place_contact);
+    ik = arm_.solveCollisionFree(target, q_, world_state, options);
+  }
   if (residual)
     *residual = Eigen::Vector2d(ik.position_error, ik.orientation_error);
   if (!ik.success)
@@ -154,7 +200,31 @@ vrrw_kinematics::TrajectoryResult GhostRobot::plan(const Eigen::VectorXd& world_
   request.plan.goal_joints = q_;
   request.plan.time_limit = time_limit > 0.0 ? time_limit : 1.0;
   request.waypoints = waypoints_;
-  vrrw_kinematics::TrajectoryResult result = arm_.planTrajectory(request, world_state);
+  vrrw_kinematics::TrajectoryResult result;
+  if (!place_contact || waypoints_.empty())
+  {
+    const PlaceContact place(place_contact);
+    result = arm_.planTrajectory(request, world_state);
+  }
+  else
+  {
+    // to the last waypoint as always (its index keeps its meaning), then the place leg with the contact allowed
+    vrrw_kinematics::TrajectoryRequest place_leg = request;
+    request.plan.goal_joints = waypoints_.back();
+    request.waypoints.pop_back();
+    place_leg.plan.start = waypoints_.back();
+    place_leg.waypoints.clear();
+    result = arm_.planTrajectory(request, world_state);
+    if (result.success)
+    {
+      const PlaceContact place(place_contact);
+      vrrw_kinematics::TrajectoryResult last = arm_.planTrajectory(place_leg, world_state);
+      if (last.success)
+        append(result, last);
+      else
+        result = last, result.failed_waypoint = result.failed_waypoint < 0 ? -1 : int(waypoints_.size());
+    }
+  }
   if (result.success)
     last_plan_ = result.trajectory;
   return result;

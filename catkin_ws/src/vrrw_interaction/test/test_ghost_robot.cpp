@@ -5,6 +5,7 @@
 #include <vrrw_interaction/ghost_robot.h>
 #include <vrrw_interaction/hand.h>
 #include <vrrw_kinematics/scene_state.h>
+#include <vrrw_kinematics/top_grasp.h>
 #include <vrrw_scene/scene_loader.h>
 
 using namespace vrrw_interaction;
@@ -146,6 +147,75 @@ TEST_F(GhostTest, PlanThroughAWaypointTheWorldNowBlocksFailsNamingIt)
   EXPECT_FALSE(plan.success);
   EXPECT_EQ(plan.failed_waypoint, 0) << plan.message;
   EXPECT_FALSE(ghost.lastPlan());
+}
+
+TEST_F(GhostTest, PlaceContactLetsTheHeldDrillTouchTheTableOnlyAtTheGhostAndOnTheLastLeg)
+{
+  vrrw_kinematics::CollisionWorld world = *world_;
+  vrrw_kinematics::Arm arm(world, *scene_->robot("ur5e"));
+  std::vector<Eigen::Isometry3d> bodies;
+  world.bodyTransforms(state_, bodies);
+  Eigen::Isometry3d drill = bodies[world.bodyIndex("drill")];  // standing on the table
+  drill.translation().z() += 0.05;
+  world.setObjectPose("drill", drill);
+  const Eigen::Isometry3d grasp = vrrw_kinematics::topGrasp(drill, Eigen::Vector3d(0.03, 0.0, 0.203));
+  GhostRobot taker(arm, ghost_.presets(), arm.jointValues(state_));
+  ASSERT_TRUE(taker.setPose(grasp, state_, 10.0).success);
+  const Eigen::VectorXd state = arm.withJointValues(state_, taker.joints());
+  std::vector<std::string> gripper_links;
+  for (std::vector<int> below{ world.model().linkIndex("ur5e_tool0") }; !below.empty();)
+  {
+    const auto& link = world.model().links()[below.back()];
+    below.pop_back();
+    gripper_links.push_back(link.name);
+    below.insert(below.end(), link.child_links.begin(), link.child_links.end());
+  }
+  world.attachObject("drill", "ur5e_tcp", state, gripper_links);  // held 5 cm above the table
+  world.setAllowed("drill", "table", false);                       // as the interaction node does when it takes it
+
+  GhostRobot ghost(arm, ghost_.presets(), taker.joints());
+  const auto lowered = [&](double dz) { return grasp * Eigen::Isometry3d(Eigen::Translation3d(0, 0, dz)); };
+  const Eigen::Isometry3d pressed = lowered(0.052), above = lowered(0.02);  // tool z points down
+  const Outcome refused = ghost.setPose(pressed, state, 10.0);
+  EXPECT_FALSE(refused.success);
+  EXPECT_NE(refused.message.find("table"), std::string::npos) << refused.message;
+  EXPECT_NE(refused.message.find("drill"), std::string::npos) << refused.message;
+
+  int toggles = 0;
+  ghost.place_contact = [&](bool allow) {
+    world.setAllowed("drill", "table", allow);
+    ++toggles;
+  };
+  const Outcome fingers = ghost.setPose(lowered(0.25), state, 10.0);  // the fingers 5 cm into the table
+  EXPECT_FALSE(fingers.success);
+  EXPECT_NE(fingers.message.find("table"), std::string::npos) << fingers.message;
+  EXPECT_EQ(fingers.message.find("drill"), std::string::npos) << fingers.message;
+  ASSERT_TRUE(ghost.setPose(pressed, state, 10.0).success);
+  EXPECT_FALSE(world.acm().allowed("drill", "table"));
+  EXPECT_EQ(toggles % 2, 0);
+
+  // the pressing pose as a waypoint is refused: only the last leg may touch
+  ghost.addWaypoint();
+  ASSERT_TRUE(ghost.setPose(above, state, 10.0).success);
+  const auto through = ghost.plan(state, 1.0);
+  EXPECT_FALSE(through.success);
+  EXPECT_EQ(through.failed_waypoint, 0) << through.message;
+
+  // above it as the waypoint, pressed as the goal: planned, stopping at the waypoint, ending pressed
+  ghost.clearWaypoints();
+  ghost.addWaypoint();
+  ASSERT_TRUE(ghost.setPose(pressed, state, 10.0).success);
+  const auto place = ghost.plan(state, 1.0);
+  ASSERT_TRUE(place.success) << place.message;
+  ASSERT_EQ(place.waypoint_times.size(), 2u);
+  EXPECT_NEAR(place.waypoint_times.back(), place.trajectory.points.back().time, 1e-9);
+  const auto& end = place.trajectory.points.back().positions;
+  for (std::size_t j = 0; j < 6; ++j)
+    EXPECT_NEAR(end[j], ghost.joints()[Eigen::Index(j)], 1e-6);
+  for (std::size_t k = 1; k < place.trajectory.points.size(); ++k)
+    ASSERT_GT(place.trajectory.points[k].time, place.trajectory.points[k - 1].time);
+  EXPECT_FALSE(world.acm().allowed("drill", "table"));
+  EXPECT_EQ(toggles % 2, 0);
 }
 
 TEST_F(GhostTest, HandGrabsTheNearestBodyAtItsSurface)

@@ -1,6 +1,7 @@
 #pragma once
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,8 +53,15 @@ public:
   Outcome clearWaypoints();
   const std::vector<Eigen::VectorXd>& waypoints() const { return waypoints_; }
 
+  /// \brief While set, called with true before the ghost's own pose is checked (setPose, setJoints) and
+  /// before the plan's last leg (the place: last waypoint to ghost) is planned, and with false after: the
+  /// node lets the object the robot holds touch the surface it is set down on there (as MoveIt's place lets
+  /// it touch its support surface), while every earlier leg keeps it clear.
+  std::function<void(bool)> place_contact;
+
   /// \brief Collision-free from the robot (its arm in `world_state`) through every waypoint in order to the
-  /// ghost; kept as the last plan when it succeeds. time_limit <= 0: 1 s.
+  /// ghost; kept as the last plan when it succeeds. time_limit <= 0: 1 s (for each of the two plans when
+  /// place_contact splits off the last leg).
   vrrw_kinematics::TrajectoryResult plan(const Eigen::VectorXd& world_state, double time_limit,
                                          const vrrw_kinematics::SpeedScaling& scaling = {});
   /// \brief The last successful plan, if any.
