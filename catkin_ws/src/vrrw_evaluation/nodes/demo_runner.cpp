@@ -18,6 +18,7 @@ struct Cell
 {
   vrrw_scene::Robot robot;
   std::string object;
+  std::string table;  ///< the fixed object the drill is set down on
   std::set<std::string> obstacles;
 };
 
@@ -44,11 +45,15 @@ bool findCell(const std::string& scene_name, Cell& cell, std::string& error)
     cell.obstacles.insert(object.name);
     if (cell.object.empty() && !object.fixed && object.kind == "drill")
       cell.object = object.name;
+    if (cell.table.empty() && object.fixed && object.kind == "table")
+      cell.table = object.name;
   }
   if (cell.object.empty())
     return error = scene_name + ": objects: no graspable object (the demo picks a movable object of kind 'drill'; " +
                    "the scene has: " + (names.empty() ? "none" : names) + ")",
            false;
+  if (cell.table.empty())
+    return error = scene_name + ": objects: no fixed object of kind 'table' to set the " + cell.object + " down on", false;
   cell.robot = *robot;
   return true;
 }
@@ -116,6 +121,7 @@ int main(int argc, char** argv)
   GhostOperator ghost(node, cell.robot.name);
   if (!ghost.waitUntilReady(10.0, error))
     return spinner.stop(), std::cerr << "demo: " << error << ": the teach stage needs the ghost services\n", 1;
+  options.table = cell.table;
   PickPlaceDemo demo(client, ghost, options);
   Demonstration demonstration;
   auto stage = [&](const char* name, const std::function<bool()>& run) {

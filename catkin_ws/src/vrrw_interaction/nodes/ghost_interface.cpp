@@ -182,12 +182,12 @@ Outcome GhostInterface::reset()
 }
 
 Outcome GhostInterface::plan(double time_limit, trajectory_msgs::JointTrajectory* trajectory,
-                             const vrrw_kinematics::SpeedScaling& scaling)
+                             const vrrw_kinematics::SpeedScaling& scaling, vrrw_kinematics::TimeProfile profile)
 {
   std::lock_guard<std::mutex> lock(view_.mutex());
   if (!std::isfinite(time_limit))
     return { false, "time_limit: not finite" };
-  const vrrw_kinematics::TrajectoryResult result = ghost_.plan(view_.liveState(), time_limit, scaling);
+  const vrrw_kinematics::TrajectoryResult result = ghost_.plan(view_.liveState(), time_limit, scaling, profile);
   if (!result.success)
   {
     const std::string where = result.failed_waypoint >= 0 && result.failed_waypoint < int(ghost_.waypoints().size())
@@ -268,9 +268,17 @@ Outcome GhostInterface::supportSurface(const std::string& name)
 
 bool GhostInterface::onPlan(vrrw_msgs::GhostPlan::Request& req, vrrw_msgs::GhostPlan::Response& res)
 {
-  const Outcome o = plan(req.time_limit, &res.trajectory,
-                         vrrw_kinematics::speedScaling(req.max_velocity_scaling_factor,
-                                                       req.max_acceleration_scaling_factor));
+  Outcome o;
+  try
+  {
+    o = plan(req.time_limit, &res.trajectory,
+             vrrw_kinematics::speedScaling(req.max_velocity_scaling_factor, req.max_acceleration_scaling_factor),
+             vrrw_kinematics::timeProfile(req.time_profile));
+  }
+  catch (const std::exception& e)
+  {
+    o = { false, e.what() };
+  }
   res.success = o.success, res.message = o.message;
   return true;
 }

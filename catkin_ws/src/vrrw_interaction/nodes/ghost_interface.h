@@ -47,7 +47,8 @@ public:
   Outcome clearWaypoints();
   Outcome reset();
   Outcome plan(double time_limit, trajectory_msgs::JointTrajectory* trajectory = nullptr,
-               const vrrw_kinematics::SpeedScaling& scaling = {});
+               const vrrw_kinematics::SpeedScaling& scaling = {},
+               vrrw_kinematics::TimeProfile profile = vrrw_kinematics::TimeProfile::TimeOptimal);
   /// \brief Sends the last plan; waits for the action's result when `result` is given.
   Outcome execute(control_msgs::FollowJointTrajectoryResult* result = nullptr);
   Outcome gripper(bool close);

@@ -192,10 +192,12 @@ Outcome GhostRobot::clearWaypoints()
 }
 
 vrrw_kinematics::TrajectoryResult GhostRobot::plan(const Eigen::VectorXd& world_state, double time_limit,
-                                                   const vrrw_kinematics::SpeedScaling& scaling)
+                                                   const vrrw_kinematics::SpeedScaling& scaling,
+                                                   vrrw_kinematics::TimeProfile profile)
 {
   vrrw_kinematics::TrajectoryRequest request;
   request.scaling = scaling;
+  request.profile = profile;
   request.plan.start = arm_.jointValues(world_state);
   request.plan.goal_joints = q_;
   request.plan.time_limit = time_limit > 0.0 ? time_limit : 1.0;

@@ -198,6 +198,7 @@ bool RobotServices::plan(vrrw_msgs::Plan::Request& req, vrrw_msgs::Plan::Respons
     TrajectoryRequest request;
     request.plan = planRequest(req, state);
     request.scaling = speedScaling(req.max_velocity_scaling_factor, req.max_acceleration_scaling_factor);
+    request.profile = timeProfile(req.time_profile);
     const TrajectoryResult result = arm_.planTrajectory(request, state, req.link);
     res.planning_time = result.planning_time;
     if (!result.success)

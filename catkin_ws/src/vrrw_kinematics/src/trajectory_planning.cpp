@@ -141,7 +141,9 @@ TrajectoryResult planTrajectory(MotionPlanner& planner, const TimingOptions& lim
       fail(result, planned.code, label + planned.message, static_cast<int>(leg), planned.contact);
       return result;
     }
-    appendLeg(timedLeg(planner, blended, exact, planned.path), planned.path, result);
+    appendLeg(request.profile == TimeProfile::MinimumJerk ? minimumJerkTrajectory(planned.path, planner.jointNames(), timing)
+                                                          : timedLeg(planner, blended, exact, planned.path),
+              planned.path, result);
     from = planned.path.back();
   }
   result.success = true;

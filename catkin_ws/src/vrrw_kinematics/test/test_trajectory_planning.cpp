@@ -189,3 +189,62 @@ TEST_F(TrajectoryPlanningTest, SpeedScalingBoundsEveryJointAtItsFractionOfTheLim
   EXPECT_EQ(unset.velocity, 1.0);
   EXPECT_EQ(unset.acceleration, 1.0);
 }
+
+TEST_F(TrajectoryPlanningTest, MinimumJerkIsSmoothWithinTheScaledLimitsAndRestsAtEveryVertex)
+{
+  request_.plan.seed = 7;
+  request_.scaling = { 1.0, 0.25 };
+  request_.profile = TimeProfile::MinimumJerk;
+  const TrajectoryResult smooth = planTrajectory(*planner_, timing_, request_);
+  request_.profile = TimeProfile::TimeOptimal;
+  const TrajectoryResult fast = planTrajectory(*planner_, timing_, request_);
+  ASSERT_TRUE(smooth.success && fast.success) << smooth.message << fast.message;
+  expectCollisionFree(smooth.trajectory);
+  const auto& points = smooth.trajectory.points;
+  double peak_velocity = 0.0, peak_acceleration = 0.0, largest_step = 0.0;
+  for (std::size_t k = 0; k < points.size(); ++k)
+    for (std::size_t j = 0; j < 6; ++j)
+    {
+      peak_velocity = std::max(peak_velocity, std::abs(points[k].velocities[j]));
+      peak_acceleration = std::max(peak_acceleration, std::abs(points[k].accelerations[j]));
+      if (k > 0)  // no step in acceleration between 10 ms samples: bounded jerk
+        largest_step = std::max(largest_step, std::abs(points[k].accelerations[j] - points[k - 1].accelerations[j]));
+    }
+  std::cout << "minimum jerk " << smooth.trajectory.duration() << " s (time-optimal " << fast.trajectory.duration()
+            << " s), peak " << peak_velocity << " rad/s, " << peak_acceleration << " rad/s^2, largest acceleration step "
+            << largest_step << " rad/s^2 in one sample\n";
+  EXPECT_LE(peak_velocity, M_PI + 1e-9);
+  EXPECT_LE(peak_acceleration, 0.25 * M_PI + 1e-9);
+  EXPECT_GT(peak_acceleration, 0.9 * 0.25 * M_PI);  // the slowest joint of some piece uses its limit
+  EXPECT_LT(largest_step, 0.05 * 0.25 * M_PI);
+  EXPECT_GT(smooth.trajectory.duration(), fast.trajectory.duration());
+  // at rest, without acceleration, at every vertex of the checked path; the last sample is the goal exactly
+  std::size_t vertex = 0;
+  for (const auto& p : points)
+    if (vertex < smooth.path.size() && (positions(p) - smooth.path[vertex]).norm() < 1e-12)
+    {
+      for (std::size_t j = 0; j < 6; ++j)
+      {
+        EXPECT_NEAR(p.velocities[j], 0.0, 1e-12) << "vertex " << vertex;
+        EXPECT_NEAR(p.accelerations[j], 0.0, 1e-12) << "vertex " << vertex;
+      }
+      ++vertex;
+    }
+  EXPECT_EQ(vertex, smooth.path.size());
+  EXPECT_EQ(positions(points.back()), *request_.plan.goal_joints);
+  for (std::size_t w = 0; w < smooth.waypoint_times.size(); ++w)
+    EXPECT_GT(smooth.waypoint_times[w], w == 0 ? 0.0 : smooth.waypoint_times[w - 1]);
+
+  try
+  {
+    timeProfile("trapezoid");
+    ADD_FAILURE() << "an unknown profile was accepted";
+  }
+  catch (const KinematicsError& e)
+  {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidArgument);
+    EXPECT_NE(std::string(e.what()).find("time_profile: 'trapezoid'"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(timeProfile(""), TimeProfile::TimeOptimal);
+  EXPECT_EQ(timeProfile("minimum_jerk"), TimeProfile::MinimumJerk);
+}

@@ -6,6 +6,7 @@
 #include <vrrw_msgs/GhostExecute.h>
 #include <vrrw_msgs/GhostPlan.h>
 #include <vrrw_msgs/GhostSetPose.h>
+#include <vrrw_msgs/GhostSupportSurface.h>
 
 namespace vrrw_evaluation
 {
@@ -17,7 +18,7 @@ GhostOperator::GhostOperator(ros::NodeHandle& node, const std::string& robot)
 bool GhostOperator::waitUntilReady(double seconds, std::string& error)
 {
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
-  for (const char* name : { "reset", "clear_waypoints", "set_pose", "add_waypoint", "plan", "execute" })
+  for (const char* name : { "reset", "clear_waypoints", "set_support_surface", "set_pose", "add_waypoint", "plan", "execute" })
   {
     const double left = std::max(0.01, (deadline - ros::WallTime::now()).toSec());
     if (!ros::service::waitForService(prefix_ + name, ros::Duration(left)))
@@ -57,17 +58,31 @@ bool GhostOperator::setPose(const Eigen::Isometry3d& tcp, std::string& error)
 }
 
 bool GhostOperator::drive(const std::vector<Eigen::Isometry3d>& waypoints, const Eigen::Isometry3d& goal,
-                          std::string& error, double* plan_ms)
+                          std::string& error, double* plan_ms, const DriveOptions& options)
 {
   // The ghost starts at the robot, so IK of each pose is the solution nearest the arm as it stands.
   if (!trigger("reset", error) || !trigger("clear_waypoints", error))
     return false;
+  vrrw_msgs::GhostSupportSurface support;
+  support.request.name = options.support_surface;
+  if (!options.support_surface.empty() || support_surface_set_)
+  {
+    use(prefix_ + "set_support_surface");
+    if (!ros::service::call(prefix_ + "set_support_surface", support))
+      return error = prefix_ + "set_support_surface: call failed", false;
+    if (!support.response.success)
+      return error = prefix_ + "set_support_surface: " + support.response.message, false;
+    support_surface_set_ = !options.support_surface.empty();
+  }
   for (const Eigen::Isometry3d& waypoint : waypoints)
     if (!setPose(waypoint, error) || !trigger("add_waypoint", error))
       return false;
   if (!setPose(goal, error))
     return false;
   vrrw_msgs::GhostPlan plan;
+  plan.request.max_velocity_scaling_factor = options.velocity_scaling;
+  plan.request.max_acceleration_scaling_factor = options.acceleration_scaling;
+  plan.request.time_profile = options.time_profile;
   use(prefix_ + "plan");
   const ros::WallTime start = ros::WallTime::now();
   if (!ros::service::call(prefix_ + "plan", plan))

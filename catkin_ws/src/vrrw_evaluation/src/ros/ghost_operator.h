@@ -1,6 +1,7 @@
 #pragma once
 // The scripted operator's ghost-drive: the same services an operator's marker menu calls
-// (/<robot>/ghost/{reset,clear_waypoints,set_pose,add_waypoint,plan,execute}), never a joint command.
+// (/<robot>/ghost/{reset,clear_waypoints,set_support_surface,set_pose,add_waypoint,plan,execute}), never a
+// joint command.
 #include <Eigen/Geometry>
 #include <ros/ros.h>
 #include <string>
@@ -9,6 +10,17 @@
 
 namespace vrrw_evaluation
 {
+/// \brief How a ghost-drive is planned: MoveIt's speed sliders (0: full speed), the time profile ("":
+/// time-optimal, "minimum_jerk") and, for a place, the scene object the held object is set down on (it may
+/// touch it at the goal and on the last leg).
+struct DriveOptions
+{
+  double velocity_scaling = 0.0;
+  double acceleration_scaling = 0.0;
+  std::string time_profile;
+  std::string support_surface;
+};
+
 class GhostOperator
 {
 public:
@@ -20,7 +32,7 @@ public:
   /// \brief Ghost-drive: ghost = robot, the ghost at every TCP pose of `waypoints` (in "world") added as a
   /// waypoint, the ghost at `goal`, plan, execute. Adds the planning time to `plan_ms`.
   bool drive(const std::vector<Eigen::Isometry3d>& waypoints, const Eigen::Isometry3d& goal, std::string& error,
-             double* plan_ms = nullptr);
+             double* plan_ms = nullptr, const DriveOptions& options = {});
 
   /// \brief The services called since the last take, in first-call order (metrics.json's teach.interfaces).
   std::vector<std::string> takeUsed() { return std::exchange(used_, {}); }
@@ -32,6 +44,7 @@ private:
   ros::NodeHandle& node_;
   std::string prefix_;  ///< /<robot>/ghost/
   std::vector<std::string> used_;
+  bool support_surface_set_ = false;
   void use(const std::string& service);
 };
 }  // namespace vrrw_evaluation

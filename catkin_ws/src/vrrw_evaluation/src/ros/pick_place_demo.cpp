@@ -158,38 +158,41 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   Eigen::Isometry3d above_place = place;
   above_place.translation().z() = near_pick.translation().z();
   double plan_ms = 0.0;
-  const std::string robot = "/" + client_.robot().name, gripper = robot + "/gripper_controller/gripper_cmd";
-  const std::vector<std::string> by_joints = { robot + "/compute_ik", robot + "/arm_controller/follow_joint_trajectory" };
+  const std::string gripper = "/" + client_.robot().name + "/gripper_controller/gripper_cmd";
   report.teach_interfaces.clear();
   auto used = [&](const std::vector<std::string>& interfaces) {
     report.teach_interfaces.push_back({ kInstructions[report.teach_interfaces.size()], interfaces });
   };
-  auto drive = [&](const std::vector<Eigen::Isometry3d>& waypoints, const Eigen::Isometry3d& goal, std::string& e) {
-    const bool ok = ghost_.drive(waypoints, goal, e, &plan_ms);
+  auto drive = [&](const std::vector<Eigen::Isometry3d>& waypoints, const Eigen::Isometry3d& goal, std::string& e,
+                   const DriveOptions& how = {}) {
+    const bool ok = ghost_.drive(waypoints, goal, e, &plan_ms, how);
     return used(ghost_.takeUsed()), ok;
   };
   auto grip = [&](double position, double force, std::string& e) {
     return used({ gripper }), client_.grip(position, force, e);
   };
-  // The approach is a ghost-drive with waypoints; stops at waypoints on a line keep the motion straight and
+  auto thirds = [](const Eigen::Isometry3d& from, const Eigen::Isometry3d& to) {
+    return std::vector<Eigen::Isometry3d>{ interpolatePose(from, to, 1.0 / 3.0), interpolatePose(from, to, 2.0 / 3.0) };
+  };
+  // Every arm motion is a ghost-drive with waypoints; stops at waypoints on a line keep the motion straight and
   // slow enough to replay. The approach goes via a waypoint halfway from the TCP at home to near-pick: one
   // off that line (e.g. above near-pick) makes joints go and come back, which the DMPs' amplitude scaling
-  // magnifies for new goals (the arm then swept through the drill).
+  // magnifies for new goals (the arm then swept through the drill). The carry is minimum-jerk at a quarter of
+  // the acceleration limits (time-optimal plans step the acceleration and swing the drill in the two-finger
+  // grip) and the place presses the drill onto the table (its support surface), so it stands flat before the
+  // fingers open.
+  const DriveOptions carry{ 1.0, options_.carry_acceleration_scaling, "minimum_jerk", "" };
+  DriveOptions place_on_table = carry;
+  place_on_table.support_surface = options_.table;
   const Eigen::Isometry3d halfway = interpolatePose(client_.tcpPose(), near_pick, 0.5);
+  std::vector<Eigen::Isometry3d> to_place = { above_place };
   const std::vector<Instruction> script = {
     [&](std::string& e) { return drive({ halfway }, near_pick, e); },
-    [&](std::string& e) {
-      return drive({ interpolatePose(near_pick, pick, 1.0 / 3.0), interpolatePose(near_pick, pick, 2.0 / 3.0) },
-                   pick, e);
-    },
+    [&](std::string& e) { return drive(thirds(near_pick, pick), pick, e); },
     [&](std::string& e) { return grip(grasp.finger_closed, grasp.grip_force, e); },
-    // The carry stays TCP lines by IK (minimum jerk): ghost plans are refused for a goal that presses the
-    // held drill onto the table, and a drill released from above while it swings in the two-finger grip
-    // (accelerations of a planned carry swing it) topples.
-    [&](std::string& e) { return used(by_joints), moveLinear({ { near_pick, 1.0 } }, e); },
+    [&](std::string& e) { return drive({}, near_pick, e, carry); },
     [&](std::string& e) {
-      used(by_joints);
-      const bool placed = moveLinear({ { above_place, 1.8 }, { place, 1.0 } }, e);
+      const bool placed = drive(to_place, place, e, place_on_table);
       object_released_ = client_.objectPose();
       return placed;
     },
@@ -204,8 +207,8 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   demo.finger_closed = grasp.finger_closed;
   demo.finger_open = grasp.finger_open;
   demo.grip_force = grasp.grip_force;
-  report.teach_source = "scripted operator: ghost-drive with waypoints to near-pick and to the grasp, GripperCommand; "
-                        "the carry by TCP lines by IK";
+  report.teach_source = "scripted operator: ghost-drive with waypoints for every arm motion (the place onto the " +
+                        options_.table + " as its support surface), GripperCommand";
   report.teach_seconds = recording.seconds;
   report.segments = demo.segments;
   report.plan_ms = plan_ms;

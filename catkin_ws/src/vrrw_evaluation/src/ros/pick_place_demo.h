@@ -26,6 +26,10 @@ struct DemoOptions
   GraspGeometry grasp;
   TrialSpread spread;
   Eigen::Vector2d final_offset{ -0.10, -0.25 };  ///< where the demonstration puts the drill, from its start
+  std::string table = "table";                  ///< the scene object the drill is set down on
+  /// the carry's ghost plans are minimum-jerk at this fraction of the acceleration limits: the drill, held by
+  /// friction between two fingers, swings with steps in acceleration (see README)
+  double carry_acceleration_scaling = 0.25;
 };
 
 class PickPlaceDemo
@@ -47,7 +51,8 @@ private:
   /// Runs the six instructions in order, recording; boundaries into `segments`, frames for `row`.
   bool perform(const std::string& row, bool frames, const std::vector<Instruction>& instructions,
                Recording& recording, std::vector<Segment>& segments, std::string& error);
-  /// A straight TCP line through every pose of `legs` (each with its duration, minimum jerk), by IK.
+  /// A straight TCP line through every pose of `legs` (each with its duration, minimum jerk), by IK (the
+  /// runner's own moves between trials; the demonstration is the operator's).
   bool moveLinear(const std::vector<std::pair<Eigen::Isometry3d, double>>& legs, std::string& error);
   bool goHome(std::string& error);
   /// The final arm goal that releases the drill, as it is held now, where the demonstration released it.

@@ -63,7 +63,8 @@ public:
   /// ghost; kept as the last plan when it succeeds. time_limit <= 0: 1 s (for each of the two plans when
   /// place_contact splits off the last leg).
   vrrw_kinematics::TrajectoryResult plan(const Eigen::VectorXd& world_state, double time_limit,
-                                         const vrrw_kinematics::SpeedScaling& scaling = {});
+                                         const vrrw_kinematics::SpeedScaling& scaling = {},
+                                         vrrw_kinematics::TimeProfile profile = vrrw_kinematics::TimeProfile::TimeOptimal);
   /// \brief The last successful plan, if any.
   const std::optional<vrrw_trajectory::JointTrajectory>& lastPlan() const { return last_plan_; }
   /// \brief Forgets the last plan (it was executed, or the robot moved away from its start).

@@ -34,4 +34,21 @@ public:
 private:
   TimingOptions options_;
 };
+
+/// \brief How a planned path is timed.
+enum class TimeProfile
+{
+  TimeOptimal,  ///< TimeParameterization: as fast as the limits allow, corners blended (steps in acceleration)
+  MinimumJerk,  ///< rest to rest along every straight piece of the path, acceleration smooth and zero at both ends
+};
+/// \brief "" or "time_optimal", "minimum_jerk"; throws KinematicsError(InvalidArgument) naming `field` otherwise.
+TimeProfile timeProfile(const std::string& name, const std::string& field = "time_profile");
+
+/// \brief The path timed piece by piece with the minimum-jerk blend 10 s^3 - 15 s^4 + 6 s^5 (T. Flash and
+/// N. Hogan, 1985), each piece as short as the joint velocity and acceleration limits allow (peaks 1.875 d / T
+/// and 5.774 d / T^2 for a joint moving d), stopping at every vertex. For loads that a step in acceleration
+/// sets swinging (an object held by friction between two fingers). Throws as TimeParameterization::compute.
+vrrw_trajectory::JointTrajectory minimumJerkTrajectory(const std::vector<Eigen::VectorXd>& path,
+                                                       const std::vector<std::string>& joint_names,
+                                                       const TimingOptions& options);
 }  // namespace vrrw_kinematics

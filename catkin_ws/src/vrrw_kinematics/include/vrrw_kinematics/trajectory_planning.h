@@ -29,6 +29,7 @@ struct TrajectoryRequest
   /// Joint values visited in order between the start and the goal; the trajectory stops at each one.
   std::vector<Eigen::VectorXd> waypoints;
   SpeedScaling scaling;
+  TimeProfile profile = TimeProfile::TimeOptimal;
 };
 
 /// \brief A timed trajectory through every waypoint, or which waypoint failed and why.
@@ -48,9 +49,10 @@ struct TrajectoryResult
   double path_length = 0.0;                     ///< joint space (rad, m)
 };
 
-/// \brief Plans start -> waypoints -> goal leg by leg with `planner` and times each leg with `timing`:
-/// corners blended (TimingOptions::max_deviation) unless the blended trajectory leaves the collision-free
-/// space, then stopping at every vertex of the checked polyline. Legs meet at rest, exactly at the
+/// \brief Plans start -> waypoints -> goal leg by leg with `planner` and times each leg with `timing` (times
+/// request.scaling) by request.profile: time-optimal with corners blended (TimingOptions::max_deviation)
+/// unless the blended trajectory leaves the collision-free space, then stopping at every vertex of the
+/// checked polyline; minimum-jerk always stops there. Legs meet at rest, exactly at the
 /// waypoints, so the trajectory passes through each of them. Every waypoint is checked (size, limits,
 /// collision) before any leg is planned.
 TrajectoryResult planTrajectory(MotionPlanner& planner, const TimingOptions& timing, const TrajectoryRequest& request);
