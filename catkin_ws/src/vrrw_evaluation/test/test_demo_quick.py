@@ -42,14 +42,17 @@ class QuickDemoTest(unittest.TestCase):
             self.assertLess(before['start'], before['end'])
             self.assertLessEqual(before['end'], after['start'] + 1e-6)
 
-    def test_approach_and_grasp_only_through_operator_interfaces(self):
+    def test_teach_only_through_operator_interfaces(self):
         used = self.metrics['teach']['interfaces']
-        for name in ['move_to_near_pick', 'move_to_pick']:
+        self.assertEqual(sorted(used), sorted(s['name'] for s in self.metrics['segments']))
+        for name in ['move_to_near_pick', 'move_to_pick', 'back_to_near_pick', 'move_to_final']:
             self.assertIn('/ur5e/ghost/plan', used[name])
             self.assertIn('/ur5e/ghost/execute', used[name])
             self.assertTrue(all(s.startswith('/ur5e/ghost/') for s in used[name]), used[name])
         self.assertIn('/ur5e/ghost/add_waypoint', used['move_to_near_pick'])
-        self.assertEqual(used['close_gripper'], ['/ur5e/gripper_controller/gripper_cmd'])
+        self.assertIn('/ur5e/ghost/set_support_surface', used['move_to_final'])  # the place onto the table
+        for name in ['close_gripper', 'open_gripper']:
+            self.assertEqual(used[name], ['/ur5e/gripper_controller/gripper_cmd'])
 
     def test_replay_reproduces_the_demonstration(self):
         replay = self.metrics['replay']

@@ -223,6 +223,15 @@ TEST(InteractionFake, PlanThroughTwoWaypointsAndExecuteEndsAtTheGhost)
   EXPECT_FALSE(slow.response.success);
   EXPECT_NE(slow.response.message.find("max_velocity_scaling_factor: 1.5"), std::string::npos) << slow.response.message;
   slow.request.max_velocity_scaling_factor = 0.5;
+  slow.request.time_profile = "trapezoid";
+  slow = call("/ur5e/ghost/plan", slow);
+  EXPECT_FALSE(slow.response.success);
+  EXPECT_NE(slow.response.message.find("time_profile: 'trapezoid'"), std::string::npos) << slow.response.message;
+  slow.request.time_profile = "minimum_jerk";  // smooth, so longer than the time-optimal plan
+  slow = call("/ur5e/ghost/plan", slow);
+  ASSERT_TRUE(slow.response.success) << slow.response.message;
+  EXPECT_GT(vrrw_trajectory::fromMsg(slow.response.trajectory).duration(), 1.05 * full_speed);
+  slow.request.time_profile = "";
   slow.request.max_acceleration_scaling_factor = 0.25;
   slow = call("/ur5e/ghost/plan", slow);
   ASSERT_TRUE(slow.response.success) << slow.response.message;

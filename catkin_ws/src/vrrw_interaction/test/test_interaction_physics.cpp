@@ -9,6 +9,7 @@
 #include <vrrw_msgs/GhostPlan.h>
 #include <vrrw_msgs/GhostPreset.h>
 #include <vrrw_msgs/GhostSetPose.h>
+#include <vrrw_msgs/GhostSupportSurface.h>
 #include <std_srvs/Trigger.h>
 #include <vrrw_physics/SetObjectPose.h>
 
@@ -191,6 +192,23 @@ TEST(InteractionPhysics, AHeldDrillIsAttachedToTheGhostAndPlannedWith)
   EXPECT_FALSE(low.response.success);
   EXPECT_NE(low.response.message.find("drill"), std::string::npos) << low.response.message;
   EXPECT_NE(low.response.message.find("table"), std::string::npos) << low.response.message;
+  // with the table as the ghost's support surface the drill may be pressed onto it, the fingers may not touch it
+  vrrw_msgs::GhostSupportSurface support;
+  support.request.name = "workbench";
+  const auto unknown = call("/ur5e/ghost/set_support_surface", support);
+  EXPECT_FALSE(unknown.response.success);
+  EXPECT_NE(unknown.response.message.find("name: 'workbench'"), std::string::npos) << unknown.response.message;
+  support.request.name = "table";
+  ASSERT_TRUE(call("/ur5e/ghost/set_support_surface", support).response.success);
+  const auto pressed = ghostTo(tcpOverDrill(drill, -0.002));
+  EXPECT_TRUE(pressed.response.success) << pressed.response.message;
+  const auto fingers = ghostTo(tcpOverDrill(drill, -0.21));
+  EXPECT_FALSE(fingers.response.success);
+  EXPECT_NE(fingers.response.message.find("table"), std::string::npos) << fingers.response.message;
+  EXPECT_EQ(fingers.response.message.find("drill"), std::string::npos) << fingers.response.message;
+  support.request.name = "";
+  ASSERT_TRUE(call("/ur5e/ghost/set_support_surface", support).response.success);
+  EXPECT_FALSE(ghostTo(tcpOverDrill(drill, -0.002)).response.success);
   call<std_srvs::Trigger>("/ur5e/ghost/reset");
   // carried 20 cm toward the robot's front, 3 cm above the table: every state of the plan keeps the drill clear of it
   trajectory_msgs::JointTrajectory carry;
