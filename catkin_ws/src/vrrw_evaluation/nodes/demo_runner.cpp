@@ -121,8 +121,11 @@ int main(int argc, char** argv)
   GhostOperator ghost(node, cell.robot.name);
   if (!ghost.waitUntilReady(10.0, error))
     return spinner.stop(), std::cerr << "demo: " << error << ": the teach stage needs the ghost services\n", 1;
+  HandOperator hand(node, cell.robot.name);
+  if (!hand.waitUntilReady(10.0, error))
+    return spinner.stop(), std::cerr << "demo: " << error << ": the teach stage needs free-drive\n", 1;
   options.table = cell.table;
-  PickPlaceDemo demo(client, ghost, options);
+  PickPlaceDemo demo(client, ghost, hand, options);
   Demonstration demonstration;
   auto stage = [&](const char* name, const std::function<bool()>& run) {
     std::printf("demo: %s ...\n", name);

@@ -45,11 +45,13 @@ class QuickDemoTest(unittest.TestCase):
     def test_teach_only_through_operator_interfaces(self):
         used = self.metrics['teach']['interfaces']
         self.assertEqual(sorted(used), sorted(s['name'] for s in self.metrics['segments']))
-        for name in ['move_to_near_pick', 'move_to_pick', 'back_to_near_pick', 'move_to_final']:
+        for name in ['move_to_near_pick', 'back_to_near_pick', 'move_to_final']:
             self.assertIn('/ur5e/ghost/plan', used[name])
             self.assertIn('/ur5e/ghost/execute', used[name])
             self.assertTrue(all(s.startswith('/ur5e/ghost/') for s in used[name]), used[name])
         self.assertIn('/ur5e/ghost/add_waypoint', used['move_to_near_pick'])
+        # free-drive down to the grasp: a hand grabs the wrist
+        self.assertEqual(used['move_to_pick'], ['/ur5e/free_drive', '/operator/right/pose', '/operator/right/grip'])
         self.assertIn('/ur5e/ghost/set_support_surface', used['move_to_final'])  # the place onto the table
         for name in ['close_gripper', 'open_gripper']:
             self.assertEqual(used[name], ['/ur5e/gripper_controller/gripper_cmd'])

@@ -216,6 +216,14 @@ TEST(PlanningNode, PlanRequestsWithoutAUsableGoalOrTimeLimitAreRefused)
     EXPECT_EQ(bad_limit.response.error_code, 9) << limit;
     EXPECT_EQ(bad_limit.response.message.rfind("time_limit", 0), 0u) << bad_limit.response.message;
   }
+
+  vrrw_msgs::Plan bad_profile;
+  bad_profile.request.goal_joints = arm({ 0.3, -1.57, 1.57, -1.57, -1.57, 0.0 });
+  bad_profile.request.time_profile = "s_curve";
+  bad_profile = call("/ur5e/plan", bad_profile);
+  EXPECT_EQ(bad_profile.response.error_code, 9);
+  EXPECT_NE(bad_profile.response.message.find("time_profile: 's_curve'"), std::string::npos)
+      << bad_profile.response.message;
 }
 
 TEST(PlanningNode, AnswersFromAStoppedJointStateStreamCarryAWarning)

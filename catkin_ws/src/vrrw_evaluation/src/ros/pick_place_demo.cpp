@@ -33,8 +33,8 @@ void addVelocities(vrrw_trajectory::JointTrajectory& trajectory)
 }
 }  // namespace
 
-PickPlaceDemo::PickPlaceDemo(WorkspaceClient& client, GhostOperator& ghost, DemoOptions options)
-  : client_(client), ghost_(ghost), options_(std::move(options))
+PickPlaceDemo::PickPlaceDemo(WorkspaceClient& client, GhostOperator& ghost, HandOperator& hand, DemoOptions options)
+  : client_(client), ghost_(ghost), hand_(hand), options_(std::move(options))
 {
   std::filesystem::create_directories(options_.out + "/data");
   std::filesystem::create_directories(options_.out + "/frames");
@@ -171,10 +171,8 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   auto grip = [&](double position, double force, std::string& e) {
     return used({ gripper }), client_.grip(position, force, e);
   };
-  auto thirds = [](const Eigen::Isometry3d& from, const Eigen::Isometry3d& to) {
-    return std::vector<Eigen::Isometry3d>{ interpolatePose(from, to, 1.0 / 3.0), interpolatePose(from, to, 2.0 / 3.0) };
-  };
-  // Every arm motion is a ghost-drive with waypoints; stops at waypoints on a line keep the motion straight and
+  // The arm moves by ghost-drive with waypoints, and by free-drive down to the grasp (the hand on the wrist
+  // pulls the compliant arm along a minimum-jerk line). Stops at waypoints on a line keep a motion straight and
   // slow enough to replay. The approach goes via a waypoint halfway from the TCP at home to near-pick: one
   // off that line (e.g. above near-pick) makes joints go and come back, which the DMPs' amplitude scaling
   // magnifies for new goals (the arm then swept through the drill). The carry is minimum-jerk at a quarter of
@@ -185,14 +183,17 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   DriveOptions place_on_table = carry;
   place_on_table.support_surface = options_.table;
   const Eigen::Isometry3d halfway = interpolatePose(client_.tcpPose(), near_pick, 0.5);
-  std::vector<Eigen::Isometry3d> to_place = { above_place };
   const std::vector<Instruction> script = {
     [&](std::string& e) { return drive({ halfway }, near_pick, e); },
-    [&](std::string& e) { return drive(thirds(near_pick, pick), pick, e); },
+    [&](std::string& e) {
+      const bool ok = hand_.freeDrive(client_.tcpPose(), pick, client_.flangePose().translation(),
+                                      options_.descent_seconds, 0.3, e);
+      return used(hand_.takeUsed()), ok;
+    },
     [&](std::string& e) { return grip(grasp.finger_closed, grasp.grip_force, e); },
     [&](std::string& e) { return drive({}, near_pick, e, carry); },
     [&](std::string& e) {
-      const bool placed = drive(to_place, place, e, place_on_table);
+      const bool placed = drive({ above_place }, place, e, place_on_table);
       object_released_ = client_.objectPose();
       return placed;
     },
@@ -207,8 +208,9 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   demo.finger_closed = grasp.finger_closed;
   demo.finger_open = grasp.finger_open;
   demo.grip_force = grasp.grip_force;
-  report.teach_source = "scripted operator: ghost-drive with waypoints for every arm motion (the place onto the " +
-                        options_.table + " as its support surface), GripperCommand";
+  report.teach_source = "scripted operator: ghost-drive with waypoints to near-pick, free-drive (a hand on the wrist) "
+                        "down to the grasp, GripperCommand, ghost-drive back up and to the place (the " +
+                        options_.table + " as its support surface)";
   report.teach_seconds = recording.seconds;
   report.segments = demo.segments;
   report.plan_ms = plan_ms;

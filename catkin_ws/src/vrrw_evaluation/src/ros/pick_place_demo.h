@@ -12,6 +12,7 @@
 #include <vrrw_evaluation/pick_place_task.h>
 
 #include "ghost_operator.h"
+#include "hand_operator.h"
 #include "workspace_client.h"
 
 namespace vrrw_evaluation
@@ -29,15 +30,16 @@ struct DemoOptions
   std::string table = "table";                  ///< the scene object the drill is set down on
   /// the carry's ghost plans are minimum-jerk at this fraction of the acceleration limits: the drill, held by
   /// friction between two fingers, swings with steps in acceleration (see README)
-  double carry_acceleration_scaling = 0.25;
+  double carry_acceleration_scaling = 0.2;
+  double descent_seconds = 1.2;  ///< the hand's pull from near-pick down to the grasp (free-drive)
 };
 
 class PickPlaceDemo
 {
 public:
-  /// \brief `ghost`: the operator's ghost-drive (the interaction node's services), the only way the
-  /// demonstration moves the arm.
-  PickPlaceDemo(WorkspaceClient& client, GhostOperator& ghost, DemoOptions options);
+  /// \brief `ghost` and `hand`: the operator's ghost-drive and free-drive (the interaction node's services
+  /// and hand topics), the only ways the demonstration moves the arm.
+  PickPlaceDemo(WorkspaceClient& client, GhostOperator& ghost, HandOperator& hand, DemoOptions options);
 
   /// \brief The scripted demonstration: near-pick, pick, close, back, carry and lower, open.
   bool teach(Demonstration& demo, DemoReport& report, std::string& error);
@@ -63,6 +65,7 @@ private:
 
   WorkspaceClient& client_;
   GhostOperator& ghost_;
+  HandOperator& hand_;
   DemoOptions options_;
   std::vector<double> home_;
   Eigen::Isometry3d object_start_ = Eigen::Isometry3d::Identity();

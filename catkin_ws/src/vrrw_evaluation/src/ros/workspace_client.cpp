@@ -135,6 +135,11 @@ Eigen::Isometry3d WorkspaceClient::tcpPose()
   return lookup(robot_.tcp_link).value_or(Eigen::Isometry3d::Identity());
 }
 
+Eigen::Isometry3d WorkspaceClient::flangePose()
+{
+  return lookup(robot_.tool_link).value_or(Eigen::Isometry3d::Identity());
+}
+
 bool WorkspaceClient::execute(const vrrw_trajectory::JointTrajectory& trajectory, std::string& error)
 {
   control_msgs::FollowJointTrajectoryGoal goal;

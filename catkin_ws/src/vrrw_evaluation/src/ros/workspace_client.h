@@ -53,6 +53,8 @@ public:
   std::vector<double> armJoints();
   Eigen::Isometry3d objectPose();
   Eigen::Isometry3d tcpPose();
+  /// \brief The flange (the robot's tool_link) in the world: where a hand grabs the wrist.
+  Eigen::Isometry3d flangePose();
 
   /// \brief Sends a whole trajectory as one FollowJointTrajectory goal and waits for its result.
   bool execute(const vrrw_trajectory::JointTrajectory& trajectory, std::string& error);
