@@ -139,9 +139,11 @@ int main(int argc, char** argv)
   bool ok = stage("1 teach", [&] { return demo.teach(demonstration, report, error); });
   if (ok)
     ok = stage("2 segment", [&] {
+      if (!demo.segment(demonstration, report, error))
+        return false;
       for (const Segment& s : demonstration.segments)
         std::printf("demo:   %-18s %7.3f .. %7.3f s\n", s.name.c_str(), s.start, s.end);
-      return demonstration.segments.size() == kInstructions.size();
+      return true;
     });
   if (ok)
     ok = stage("3 replay", [&] { return demo.replay(demonstration, report, error); });

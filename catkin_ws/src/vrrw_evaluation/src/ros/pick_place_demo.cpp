@@ -1,5 +1,6 @@
 #include "pick_place_demo.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -7,6 +8,8 @@
 #include <fstream>
 #include <functional>
 #include <vrrw_evaluation/trial_outcome.h>
+
+#include "bag_instructions.h"
 
 namespace vrrw_evaluation
 {
@@ -204,6 +207,7 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   if (!perform("demonstration", true, script, recording, demo.segments, error))
     return false;
   object_end_ = client_.objectPose();
+  demonstration_start_ = recording.start_stamp;
   demo.arm = recording.arm;
   demo.finger_closed = grasp.finger_closed;
   demo.finger_open = grasp.finger_open;
@@ -222,6 +226,38 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   report.teach_source += "; bag by " + recording.recorder;
   if (!recording.arm_contacts.empty())
     progress("warning: the demonstration touched " + *recording.arm_contacts.begin());
+  return true;
+}
+
+bool PickPlaceDemo::segment(Demonstration& demo, DemoReport& report, std::string& error)
+{
+  if (report.bag_file.empty())
+    return error = "no bag was recorded", false;
+  std::vector<Segment> in_bag;
+  try
+  {
+    in_bag = bagInstructions(report.bag_file, demonstration_start_);
+  }
+  catch (const std::exception& e)
+  {
+    return error = e.what(), false;
+  }
+  std::string names;
+  for (const Segment& s : in_bag)
+    names += (names.empty() ? "" : ", ") + s.name;
+  if (in_bag.size() != kInstructions.size() || !std::equal(kInstructions.begin(), kInstructions.end(), in_bag.begin(),
+                                                           [](const std::string& k, const Segment& s) { return k == s.name; }))
+    return error = report.bag_file + ": /demos/events: instructions " + (names.empty() ? "none" : names) +
+                   " (expected the six of the paper in order)",
+           false;
+  double shift = 0.0;  // the script's clock against the bag's stamps
+  for (std::size_t i = 0; i < in_bag.size(); ++i)
+    shift = std::max({ shift, std::abs(in_bag[i].start - demo.segments[i].start),
+                       std::abs(in_bag[i].end - demo.segments[i].end) });
+  char within[64];
+  std::snprintf(within, sizeof within, "%.1f ms", shift * 1e3);
+  progress("segments from " + report.bag_file + " (/demos/events), within " + within + " of the script's clock");
+  demo.segments = report.segments = in_bag;
   return true;
 }
 

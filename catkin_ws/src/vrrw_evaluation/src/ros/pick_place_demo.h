@@ -43,6 +43,9 @@ public:
 
   /// \brief The scripted demonstration: near-pick, pick, close, back, carry and lower, open.
   bool teach(Demonstration& demo, DemoReport& report, std::string& error);
+  /// \brief The six instructions as the demonstration's bag records them (its /demos/events annotations),
+  /// replacing the script's own boundaries; false when the bag lacks one or has them out of order.
+  bool segment(Demonstration& demo, DemoReport& report, std::string& error);
   /// \brief Direct imitation of every instruction from the reset scene; errors into `report`.
   bool replay(const Demonstration& demo, DemoReport& report, std::string& error);
   /// \brief DMPs per instruction, then `options.trials` new drill poses; one TrialRecord each.
@@ -71,5 +74,6 @@ private:
   Eigen::Isometry3d object_start_ = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d object_end_ = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d object_released_ = Eigen::Isometry3d::Identity();  ///< in the hand, before opening
+  double demonstration_start_ = 0.0;  ///< s of ROS time: time 0 of the demonstration's recording
 };
 }  // namespace vrrw_evaluation

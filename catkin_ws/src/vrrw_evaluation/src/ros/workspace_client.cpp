@@ -276,6 +276,7 @@ Recording WorkspaceClient::stopRecording()
   recording_ = false;
   recording_data_.bag_messages = demos_messages;
   recording_data_.seconds = (ros::Time::now() - record_start_).toSec();
+  recording_data_.start_stamp = record_start_.toSec();
   if (bag_open_)
   {
     recording_data_.bag_messages =
@@ -297,6 +298,7 @@ void WorkspaceClient::annotate(const std::string& kind, const std::string& detai
   if (demos_recording_)
   {
     vrrw_msgs::DemoAnnotate annotate;
+    annotate.request.stamp = event.header.stamp;  // the bag's event at the instant the runner's clock says
     annotate.request.text = kind + " " + detail;
     demos_annotate_.call(annotate);
   }

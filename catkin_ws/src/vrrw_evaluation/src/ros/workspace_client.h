@@ -39,6 +39,7 @@ struct Recording
   std::string recorder;  ///< who wrote it: "vrrw_demos recorder_node" or "demo_runner"
   std::uint64_t bag_messages = 0;  ///< messages in the bag
   double seconds = 0.0;  ///< wall
+  double start_stamp = 0.0;  ///< s of ROS time at the start: time 0 of every field above
 };
 
 class WorkspaceClient
