@@ -1,0 +1,101 @@
+// bagInstructions on bags written here: both annotation forms, and the bad bags a user can hand it.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <rosbag/bag.h>
+#include <stdexcept>
+#include <vrrw_msgs/Event.h>
+
+#include "../src/ros/bag_instructions.h"
+
+using vrrw_evaluation::bagInstructions;
+
+namespace
+{
+struct Written
+{
+  double t;
+  std::string kind, detail;
+};
+
+std::string writeBag(const std::string& name, const std::vector<Written>& events)
+{
+  const std::string file = testing::TempDir() + name;
+  std::remove(file.c_str());
+  rosbag::Bag bag(file, rosbag::bagmode::Write);
+  for (const Written& w : events)
+  {
+    vrrw_msgs::Event e;
+    e.header.stamp = ros::Time(100.0 + w.t);
+    e.kind = w.kind;
+    e.detail = w.detail;
+    bag.write("/demos/events", e.header.stamp, e);
+  }
+  return file;
+}
+
+std::string failure(const std::string& bag)
+{
+  try
+  {
+    bagInstructions(bag, 100.0);
+  }
+  catch (const std::runtime_error& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(BagInstructions, BothAnnotationFormsGiveTheSegmentsFromTheRecordingStart)
+{
+  const std::string runner = writeBag("runner.bag", { { 0.5, "instruction_start", "move_to_near_pick" },
+                                                      { 2.0, "grab", "hand right grabbed ur5e_wrist_3_link" },
+                                                      { 2.5, "instruction_end", "move_to_near_pick" },
+                                                      { 2.7, "instruction_start", "move_to_pick" },
+                                                      { 4.0, "instruction_failed", "move_to_pick" } });
+  const auto segments = bagInstructions(runner, 100.0);
+  ASSERT_EQ(segments.size(), 2u);
+  EXPECT_EQ(segments[0].name, "move_to_near_pick");
+  EXPECT_NEAR(segments[0].start, 0.5, 1e-6);
+  EXPECT_NEAR(segments[0].end, 2.5, 1e-6);
+  EXPECT_EQ(segments[1].name, "move_to_pick");
+  EXPECT_NEAR(segments[1].end, 4.0, 1e-6);
+
+  const std::string recorder = writeBag("recorder.bag", { { 1.0, "annotate", "instruction_start close_gripper" },
+                                                          { 1.25, "annotate", "drill grasped" },
+                                                          { 1.5, "annotate", "instruction_end close_gripper" } });
+  const auto annotated = bagInstructions(recorder, 100.0);
+  ASSERT_EQ(annotated.size(), 1u);
+  EXPECT_EQ(annotated[0].name, "close_gripper");
+  EXPECT_NEAR(annotated[0].start, 1.0, 1e-6);
+  EXPECT_NEAR(annotated[0].end, 1.5, 1e-6);
+}
+
+TEST(BagInstructions, BadBagsAreOneLineNamingTheBag)
+{
+  const std::string unended = writeBag("unended.bag", { { 0.5, "instruction_start", "move_to_near_pick" } });
+  EXPECT_NE(failure(unended).find("unended.bag: /demos/events: move_to_near_pick has no end"), std::string::npos)
+      << failure(unended);
+  const std::string overlapping = writeBag("overlap.bag", { { 0.5, "instruction_start", "move_to_near_pick" },
+                                                            { 1.0, "instruction_start", "move_to_pick" } });
+  EXPECT_NE(failure(overlapping).find("move_to_near_pick has no end before move_to_pick"), std::string::npos)
+      << failure(overlapping);
+  const std::string orphan = writeBag("orphan.bag", { { 0.5, "instruction_end", "move_to_pick" } });
+  EXPECT_NE(failure(orphan).find("the end of move_to_pick without its start"), std::string::npos) << failure(orphan);
+
+  EXPECT_NE(failure("/nonexistent/demo.bag").find("/nonexistent/demo.bag: "), std::string::npos);
+  const std::string garbage = testing::TempDir() + "garbage.bag";
+  std::ofstream(garbage) << "not a bag";
+  EXPECT_NE(failure(garbage).find("garbage.bag: "), std::string::npos) << failure(garbage);
+  EXPECT_TRUE(bagInstructions(writeBag("empty.bag", {}), 100.0).empty());
+}
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::Time::init();
+  return RUN_ALL_TESTS();
+}
