@@ -52,9 +52,10 @@ def stop(processes):
 
 
 def demo_config(path):
-    """The render's rviz config with the demo's view, drawn at 10 Hz (llvmpipe shares the 2 cores)."""
+    """The render's rviz config with the demo's view, drawn at 10 Hz (llvmpipe shares the 2 cores). The ghost
+    and the markers are off: they would hide the drill, and the ghost stays where the teach left it."""
     import yaml
-    render_scene.render_config(path, WIDTH, HEIGHT, set())
+    render_scene.render_config(path, WIDTH, HEIGHT, {'Ghosts', 'Ghost markers', 'Free-drive markers'})
     with open(path) as f:
         config = yaml.safe_load(f)
     manager = config['Visualization Manager']
