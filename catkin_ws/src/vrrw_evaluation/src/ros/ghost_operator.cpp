@@ -63,17 +63,13 @@ bool GhostOperator::drive(const std::vector<Eigen::Isometry3d>& waypoints, const
   // The ghost starts at the robot, so IK of each pose is the solution nearest the arm as it stands.
   if (!trigger("reset", error) || !trigger("clear_waypoints", error))
     return false;
-  vrrw_msgs::GhostSupportSurface support;
+  vrrw_msgs::GhostSupportSurface support;  // every drive says what it may set its held object down on
   support.request.name = options.support_surface;
-  if (!options.support_surface.empty() || support_surface_set_)
-  {
-    use(prefix_ + "set_support_surface");
-    if (!ros::service::call(prefix_ + "set_support_surface", support))
-      return error = prefix_ + "set_support_surface: call failed", false;
-    if (!support.response.success)
-      return error = prefix_ + "set_support_surface: " + support.response.message, false;
-    support_surface_set_ = !options.support_surface.empty();
-  }
+  use(prefix_ + "set_support_surface");
+  if (!ros::service::call(prefix_ + "set_support_surface", support))
+    return error = prefix_ + "set_support_surface: call failed", false;
+  if (!support.response.success)
+    return error = prefix_ + "set_support_surface: " + support.response.message, false;
   for (const Eigen::Isometry3d& waypoint : waypoints)
     if (!setPose(waypoint, error) || !trigger("add_waypoint", error))
       return false;

@@ -29,8 +29,9 @@ public:
   /// \brief Waits for the interaction node's ghost services; false with `error` naming the missing one.
   bool waitUntilReady(double seconds, std::string& error);
 
-  /// \brief Ghost-drive: ghost = robot, the ghost at every TCP pose of `waypoints` (in "world") added as a
-  /// waypoint, the ghost at `goal`, plan, execute. Adds the planning time to `plan_ms`.
+  /// \brief Ghost-drive: ghost = robot, its support surface set (options), the ghost at every TCP pose of
+  /// `waypoints` (in "world") added as a waypoint, the ghost at `goal`, plan, execute. Adds the planning time
+  /// to `plan_ms`.
   bool drive(const std::vector<Eigen::Isometry3d>& waypoints, const Eigen::Isometry3d& goal, std::string& error,
              double* plan_ms = nullptr, const DriveOptions& options = {});
 
@@ -44,7 +45,6 @@ private:
   ros::NodeHandle& node_;
   std::string prefix_;  ///< /<robot>/ghost/
   std::vector<std::string> used_;
-  bool support_surface_set_ = false;
   void use(const std::string& service);
 };
 }  // namespace vrrw_evaluation
