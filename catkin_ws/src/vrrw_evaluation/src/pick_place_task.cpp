@@ -33,9 +33,4 @@ Eigen::Isometry3d interpolatePose(const Eigen::Isometry3d& from, const Eigen::Is
   pose.linear() = Eigen::Quaterniond(from.rotation()).slerp(s, Eigen::Quaterniond(to.rotation())).toRotationMatrix();
   return pose;
 }
-
-double minimumJerk(double s)
-{
-  return s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
-}
 }  // namespace vrrw_evaluation

@@ -35,6 +35,13 @@ std::string writeBag(const std::string& name, const std::vector<Written>& events
   return file;
 }
 
+void expectSegment(const vrrw_evaluation::Segment& segment, const std::string& name, double start, double end)
+{
+  EXPECT_EQ(segment.name, name);
+  EXPECT_NEAR(segment.start, start, 1e-6) << name;
+  EXPECT_NEAR(segment.end, end, 1e-6) << name;
+}
+
 std::string failure(const std::string& bag)
 {
   try
@@ -58,20 +65,15 @@ TEST(BagInstructions, BothAnnotationFormsGiveTheSegmentsFromTheRecordingStart)
                                                       { 4.0, "instruction_failed", "move_to_pick" } });
   const auto segments = bagInstructions(runner, 100.0);
   ASSERT_EQ(segments.size(), 2u);
-  EXPECT_EQ(segments[0].name, "move_to_near_pick");
-  EXPECT_NEAR(segments[0].start, 0.5, 1e-6);
-  EXPECT_NEAR(segments[0].end, 2.5, 1e-6);
-  EXPECT_EQ(segments[1].name, "move_to_pick");
-  EXPECT_NEAR(segments[1].end, 4.0, 1e-6);
+  expectSegment(segments[0], "move_to_near_pick", 0.5, 2.5);
+  expectSegment(segments[1], "move_to_pick", 2.7, 4.0);
 
   const std::string recorder = writeBag("recorder.bag", { { 1.0, "annotate", "instruction_start close_gripper" },
                                                           { 1.25, "annotate", "drill grasped" },
                                                           { 1.5, "annotate", "instruction_end close_gripper" } });
   const auto annotated = bagInstructions(recorder, 100.0);
   ASSERT_EQ(annotated.size(), 1u);
-  EXPECT_EQ(annotated[0].name, "close_gripper");
-  EXPECT_NEAR(annotated[0].start, 1.0, 1e-6);
-  EXPECT_NEAR(annotated[0].end, 1.5, 1e-6);
+  expectSegment(annotated[0], "close_gripper", 1.0, 1.5);
 }
 
 TEST(BagInstructions, BadBagsAreOneLineNamingTheBag)

@@ -257,11 +257,10 @@ Outcome GhostInterface::supportSurface(const std::string& name)
   }
   if (!name.empty() && view_.world().bodyIndex(name) < 0)
     return { false, "name: '" + name + "' has no collision geometry to set anything down on" };
-  support_surface_ = name;
   if (name.empty())
     ghost_.place_contact = nullptr;
   else
-    ghost_.place_contact = [this](bool allow) { view_.allowPlaceContact(robot_, support_surface_, allow); };
+    ghost_.place_contact = [this, name](bool allow) { view_.allowPlaceContact(robot_, name, allow); };
   view_.event(robot_, "support_surface", name);
   return { true, name.empty() ? "no support surface" : "held objects may be set down on " + name };
 }

@@ -69,7 +69,6 @@ private:
   GhostRobot ghost_;
   std::vector<std::string> gripper_joints_;
   double gripper_open_ = 0.0, gripper_closed_ = 0.0;
-  std::string support_surface_;
   vrrw_trajectory::JointTrajectory preview_;
   ros::WallTime preview_start_;
   ros::Publisher joint_states_;

@@ -39,21 +39,6 @@ private:
   const std::function<void(bool)>& allow_;
 };
 
-/// `last` appended to `first`: it starts where `first` ends, at rest.
-void append(vrrw_kinematics::TrajectoryResult& first, const vrrw_kinematics::TrajectoryResult& last)
-{
-  const double offset = first.trajectory.points.back().time;
-  for (std::size_t k = 1; k < last.trajectory.points.size(); ++k)
-  {
-    first.trajectory.points.push_back(last.trajectory.points[k]);
-    first.trajectory.points.back().time += offset;
-  }
-  for (const double t : last.waypoint_times)
-    first.waypoint_times.push_back(t + offset);
-  first.path.insert(first.path.end(), last.path.begin() + std::min<std::ptrdiff_t>(1, last.path.size()), last.path.end());
-  first.planning_time += last.planning_time;
-  first.path_length += last.path_length;
-}
 }  // namespace
 
 std::string ikRefusal(const vrrw_kinematics::IkResult& ik)
@@ -222,7 +207,7 @@ vrrw_kinematics::TrajectoryResult GhostRobot::plan(const Eigen::VectorXd& world_
       const PlaceContact place(place_contact);
       vrrw_kinematics::TrajectoryResult last = arm_.planTrajectory(place_leg, world_state);
       if (last.success)
-        append(result, last);
+        vrrw_kinematics::appendTrajectory(result, last);
       else
         result = last, result.failed_waypoint = result.failed_waypoint < 0 ? -1 : int(waypoints_.size());
     }

@@ -33,6 +33,11 @@ void append(vrrw_trajectory::JointTrajectory& trajectory, double time, const Eig
 }
 }  // namespace
 
+double minimumJerk(double s)
+{
+  return s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
+}
+
 TimeProfile timeProfile(const std::string& name, const std::string& field)
 {
   if (name.empty() || name == "time_optimal")
@@ -70,10 +75,9 @@ vrrw_trajectory::JointTrajectory minimumJerkTrajectory(const std::vector<Eigen::
     for (int i = 1; i <= samples; ++i)
     {
       const double s = double(i) / samples;
-      const double blend = s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
       const double rate = 30.0 * s * s * (1.0 - s) * (1.0 - s) / duration;
       const double curve = 60.0 * s * (1.0 - s) * (1.0 - 2.0 * s) / (duration * duration);
-      append(trajectory, time + s * duration, i == samples ? path[k] : Eigen::VectorXd(path[k - 1] + blend * delta),
+      append(trajectory, time + s * duration, i == samples ? path[k] : Eigen::VectorXd(path[k - 1] + minimumJerk(s) * delta),
              rate * delta, curve * delta);
     }
     time += duration;

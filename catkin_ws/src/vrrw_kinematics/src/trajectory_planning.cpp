@@ -40,23 +40,6 @@ vrrw_trajectory::JointTrajectory timedLeg(MotionPlanner& planner, const TimePara
   return leg;
 }
 
-/// Appends a leg that starts where the trajectory ends (both at rest), shifted to the end's time.
-void appendLeg(const vrrw_trajectory::JointTrajectory& leg, const std::vector<Eigen::VectorXd>& path,
-               TrajectoryResult& result)
-{
-  const bool first = result.trajectory.points.empty();
-  const double offset = first ? 0.0 : result.trajectory.points.back().time;
-  result.trajectory.joint_names = leg.joint_names;
-  for (std::size_t k = first ? 0 : 1; k < leg.points.size(); ++k)
-  {
-    result.trajectory.points.push_back(leg.points[k]);
-    result.trajectory.points.back().time += offset;
-  }
-  result.waypoint_times.push_back(result.trajectory.points.back().time);
-  result.path.insert(result.path.end(), path.begin() + (result.path.empty() ? 0 : 1), path.end());
-  result.path_length += pathLength(path);
-}
-
 /// The limits times the request's scaling; empty limits (and `result` failed) when a factor is not in (0, 1].
 TimingOptions scaled(const TimingOptions& limits, const SpeedScaling& scaling, TrajectoryResult& result)
 {
@@ -89,6 +72,24 @@ bool endpointsValid(MotionPlanner& planner, const TrajectoryRequest& request, Tr
   return true;
 }
 }  // namespace
+
+void appendTrajectory(TrajectoryResult& result, const TrajectoryResult& next)
+{
+  const bool first = result.trajectory.points.empty();
+  const double offset = first ? 0.0 : result.trajectory.points.back().time;
+  result.trajectory.joint_names = next.trajectory.joint_names;
+  for (std::size_t k = first ? 0 : 1; k < next.trajectory.points.size(); ++k)
+  {
+    result.trajectory.points.push_back(next.trajectory.points[k]);
+    result.trajectory.points.back().time += offset;
+  }
+  for (const double t : next.waypoint_times)
+    result.waypoint_times.push_back(t + offset);
+  const bool joined = !result.path.empty() && !next.path.empty();
+  result.path.insert(result.path.end(), next.path.begin() + (joined ? 1 : 0), next.path.end());
+  result.planning_time += next.planning_time;
+  result.path_length += next.path_length;
+}
 
 SpeedScaling speedScaling(double max_velocity_scaling_factor, double max_acceleration_scaling_factor)
 {
@@ -141,9 +142,14 @@ TrajectoryResult planTrajectory(MotionPlanner& planner, const TimingOptions& lim
       fail(result, planned.code, label + planned.message, static_cast<int>(leg), planned.contact);
       return result;
     }
-    appendLeg(request.profile == TimeProfile::MinimumJerk ? minimumJerkTrajectory(planned.path, planner.jointNames(), timing)
-                                                          : timedLeg(planner, blended, exact, planned.path),
-              planned.path, result);
+    TrajectoryResult timed;
+    timed.trajectory = request.profile == TimeProfile::MinimumJerk
+                         ? minimumJerkTrajectory(planned.path, planner.jointNames(), timing)
+                         : timedLeg(planner, blended, exact, planned.path);
+    timed.waypoint_times = { timed.trajectory.points.back().time };
+    timed.path = planned.path;
+    timed.path_length = pathLength(planned.path);
+    appendTrajectory(result, timed);
     from = planned.path.back();
   }
   result.success = true;

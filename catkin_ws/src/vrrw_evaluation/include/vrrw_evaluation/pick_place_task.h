@@ -2,6 +2,7 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <string>
+#include <vrrw_kinematics/time_parameterization.h>
 
 namespace vrrw_evaluation
 {
@@ -35,6 +36,6 @@ Eigen::Isometry3d drillInHand(const Eigen::Isometry3d& tcp, const Eigen::Isometr
 
 /// \brief Straight line from `from` to `to` (orientation by slerp) at blend `s` in [0, 1].
 Eigen::Isometry3d interpolatePose(const Eigen::Isometry3d& from, const Eigen::Isometry3d& to, double s);
-/// \brief Minimum-jerk blend 10 s^3 - 15 s^4 + 6 s^5 of s in [0, 1].
-double minimumJerk(double s);
+/// \brief The TCP lines' blend (vrrw_kinematics' minimum jerk).
+using vrrw_kinematics::minimumJerk;
 }  // namespace vrrw_evaluation

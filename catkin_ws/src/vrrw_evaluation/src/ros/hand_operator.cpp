@@ -1,5 +1,6 @@
 #include "hand_operator.h"
 
+#include <algorithm>
 #include <std_srvs/SetBool.h>
 #include <tf2_eigen/tf2_eigen.h>
 #include <vrrw_evaluation/pick_place_task.h>
@@ -20,8 +21,10 @@ HandOperator::HandOperator(ros::NodeHandle& node, const std::string& robot, cons
   pose_ = node.advertise<geometry_msgs::PoseStamped>(pose_topic_, 10);
   grip_ = node.advertise<std_msgs::Float64>(grip_topic_, 10);
   events_ = node.subscribe<vrrw_msgs::Event>("/operator/events", 50, [this](const vrrw_msgs::Event::ConstPtr& e) {
+    if (e->detail.rfind("hand " + hand_ + " ", 0) != 0)
+      return;  // another hand's, or not a hand's
     std::lock_guard<std::mutex> lock(mutex_);
-    events_seen_.push_back(*e);
+    events_seen_.push_back(e->kind);
   });
 }
 
@@ -69,9 +72,8 @@ bool HandOperator::holdUntil(const Eigen::Isometry3d& pose, double grip, const s
     publish(pose, grip);
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      for (const vrrw_msgs::Event& e : events_seen_)
-        if (e.kind == kind && e.detail.rfind("hand " + hand_ + " ", 0) == 0)
-          return true;
+      if (std::find(events_seen_.begin(), events_seen_.end(), kind) != events_seen_.end())
+        return true;
     }
     rate.sleep();
   }

@@ -40,7 +40,7 @@ private:
   ros::Publisher pose_, grip_;
   ros::Subscriber events_;
   std::mutex mutex_;
-  std::vector<vrrw_msgs::Event> events_seen_;
+  std::vector<std::string> events_seen_;  ///< kinds of this hand's /operator/events since the last drive
   std::vector<std::string> used_;
 };
 }  // namespace vrrw_evaluation

@@ -44,6 +44,9 @@ enum class TimeProfile
 /// \brief "" or "time_optimal", "minimum_jerk"; throws KinematicsError(InvalidArgument) naming `field` otherwise.
 TimeProfile timeProfile(const std::string& name, const std::string& field = "time_profile");
 
+/// \brief The minimum-jerk blend 10 s^3 - 15 s^4 + 6 s^5 of s in [0, 1].
+double minimumJerk(double s);
+
 /// \brief The path timed piece by piece with the minimum-jerk blend 10 s^3 - 15 s^4 + 6 s^5 (T. Flash and
 /// N. Hogan, 1985), each piece as short as the joint velocity and acceleration limits allow (peaks 1.875 d / T
 /// and 5.774 d / T^2 for a joint moving d), stopping at every vertex. For loads that a step in acceleration

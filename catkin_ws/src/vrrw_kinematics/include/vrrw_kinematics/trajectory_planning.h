@@ -49,6 +49,10 @@ struct TrajectoryResult
   double path_length = 0.0;                     ///< joint space (rad, m)
 };
 
+/// \brief Appends `next`, which starts where `result` ends (both at rest): its samples shifted to `result`'s
+/// end, its waypoint times, path, planning time and path length added. An empty `result` takes it whole.
+void appendTrajectory(TrajectoryResult& result, const TrajectoryResult& next);
+
 /// \brief Plans start -> waypoints -> goal leg by leg with `planner` and times each leg with `timing` (times
 /// request.scaling) by request.profile: time-optimal with corners blended (TimingOptions::max_deviation)
 /// unless the blended trajectory leaves the collision-free space, then stopping at every vertex of the
