@@ -9,6 +9,7 @@ plots and frame strips beside the runner's metrics.json, report.md and index.htm
 """
 import argparse
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -49,6 +50,18 @@ def stop(processes):
                 os.killpg(process.pid, signal.SIGKILL)
             except ProcessLookupError:
                 pass
+
+
+def workspace_trouble(path, lines=12):
+    """The workspace log's last errors, warnings and dead processes: what a failed run is first asked."""
+    marks = ('process has died', '[ERROR]', '[FATAL]', '[ WARN]', 'terminate called', 'Segmentation fault',
+             'Exception thrown')
+    try:
+        with open(path, errors='replace') as f:
+            found = [line.rstrip() for line in f if any(mark in line for mark in marks)]
+    except OSError:
+        return []
+    return [re.sub(r'\x1b\[[0-9;]*m', '', line) for line in found[-lines:]]
 
 
 def demo_config(path):
@@ -133,6 +146,9 @@ def main():
     log('drawing plots and frame strips')
     plot_demo.draw(out)
     log(f'report: {os.path.join(out, "index.html")} ({time.monotonic() - start:.0f} s in all)')
+    if result.returncode != 0:
+        for line in workspace_trouble(launch_log):
+            print(f'demo: workspace.log: {line}', file=sys.stderr)
     sys.exit(result.returncode)
 
 

@@ -6,6 +6,7 @@
 #include <random>
 #include <sstream>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "vrrw_kinematics/collision_world.h"
 #include "world_box.h"
@@ -179,7 +180,8 @@ std::size_t AllowedCollisionMatrix::count(const std::string& reason) const
 
 void AllowedCollisionMatrix::save(const std::string& path, const std::string& key) const
 {
-  const std::string temporary = path + ".tmp";
+  // a name of its own: the nodes of one bring-up may all compute and save the same matrix at once
+  const std::string temporary = path + ".tmp" + std::to_string(::getpid());
   {
     std::ofstream out(temporary);
     if (!out)

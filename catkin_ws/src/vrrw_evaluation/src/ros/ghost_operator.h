@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "service_links.h"
+
 namespace vrrw_evaluation
 {
 /// \brief How a ghost-drive is planned: MoveIt's speed sliders (0: full speed), the time profile ("":
@@ -44,6 +46,7 @@ private:
 
   ros::NodeHandle& node_;
   std::string prefix_;  ///< /<robot>/ghost/
+  ServiceLinks links_;
   std::vector<std::string> used_;
   void use(const std::string& service);
 };

@@ -11,6 +11,8 @@
 #include <vector>
 #include <vrrw_msgs/Event.h>
 
+#include "service_links.h"
+
 namespace vrrw_evaluation
 {
 class HandOperator
@@ -42,5 +44,6 @@ private:
   std::mutex mutex_;
   std::vector<std::string> events_seen_;  ///< kinds of this hand's /operator/events since the last drive
   std::vector<std::string> used_;
+  ServiceLinks links_;
 };
 }  // namespace vrrw_evaluation

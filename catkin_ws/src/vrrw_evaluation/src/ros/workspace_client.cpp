@@ -17,16 +17,7 @@ namespace vrrw_evaluation
 {
 namespace
 {
-/// A service call that survives one dropped connection (a node's call fails when its connection to the
-/// server breaks, as seen once in a 20-trial run): wait for the service, then one more try.
-template <class Service>
-bool callTwice(ros::ServiceClient& client, Service& srv)
-{
-  if (client.call(srv))
-    return true;
-  ROS_WARN_STREAM("demo: " << client.getService() << " did not answer; calling once more");
-  return client.waitForExistence(ros::Duration(2.0)) && client.call(srv);
-}
+const std::string kPlace = "/physics/set_object_pose";
 trajectory_msgs::JointTrajectory toMsg(const vrrw_trajectory::JointTrajectory& trajectory)
 {
   trajectory_msgs::JointTrajectory msg;
@@ -60,13 +51,9 @@ WorkspaceClient::WorkspaceClient(ros::NodeHandle& node, const vrrw_scene::Robot&
   , tf_listener_(tf_buffer_)
   , arm_("/" + robot.name + "/arm_controller/follow_joint_trajectory", true)
   , gripper_("/" + robot.name + "/gripper_controller/gripper_cmd", true)
+  , ik_("/" + robot.name + "/compute_ik")
+  , plan_("/" + robot.name + "/plan")
 {
-  ik_ = node.serviceClient<vrrw_msgs::ComputeIK>("/" + robot.name + "/compute_ik");
-  plan_ = node.serviceClient<vrrw_msgs::Plan>("/" + robot.name + "/plan");
-  place_ = node.serviceClient<vrrw_physics::SetObjectPose>("/physics/set_object_pose");
-  demos_start_ = node.serviceClient<vrrw_msgs::DemoStart>("/demos/start");
-  demos_stop_ = node.serviceClient<vrrw_msgs::DemoStop>("/demos/stop");
-  demos_annotate_ = node.serviceClient<vrrw_msgs::DemoAnnotate>("/demos/annotate");
   joint_states_ = node.subscribe("/" + robot.name + "/joint_states", 1000, &WorkspaceClient::onJointStates, this);
   contacts_ = node.subscribe("/physics/contacts", 100, &WorkspaceClient::onContacts, this);
   track_timer_ = node.createTimer(ros::Duration(0.05), &WorkspaceClient::onTrackTimer, this);
@@ -78,9 +65,9 @@ bool WorkspaceClient::waitUntilReady(double seconds, std::string& error)
   auto left = [&] { return ros::Duration(std::max(0.01, (deadline - ros::WallTime::now()).toSec())); };
   if (!arm_.waitForServer(left()) || !gripper_.waitForServer(left()))
     return error = "no controller for " + robot_.name + " (arm_controller / gripper_controller)", false;
-  if (!ik_.waitForExistence(left()) || !plan_.waitForExistence(left()))
+  if (!ros::service::waitForService(ik_, left()) || !ros::service::waitForService(plan_, left()))
     return error = "no planning node (/" + robot_.name + "/compute_ik, /plan)", false;
-  if (!place_.waitForExistence(left()))
+  if (!ros::service::waitForService(kPlace, left()))
     return error = "no physics node (/physics/set_object_pose): the demo runs in physics mode", false;
   std::string urdf;
   if (!node_.getParam("/robot_description", urdf))
@@ -178,7 +165,7 @@ std::optional<std::vector<double>> WorkspaceClient::ik(const Eigen::Isometry3d& 
   srv.request.timeout = 0.05;
   srv.request.avoid_collisions = avoid_collisions;
   const ros::WallTime start = ros::WallTime::now();
-  const bool called = callTwice(ik_, srv);
+  const bool called = links_.call(ik_, srv);
   if (ik_ms)
     *ik_ms += (ros::WallTime::now() - start).toSec() * 1000.0;
   if (!called)
@@ -203,7 +190,7 @@ std::optional<vrrw_trajectory::JointTrajectory> WorkspaceClient::plan(const std:
   srv.request.goal_joints = jointState(robot_.arm_joints, goal);
   srv.request.time_limit = 2.0;
   srv.request.seed = 1;
-  if (!callTwice(plan_, srv))
+  if (!links_.call(plan_, srv))
     return error = "plan did not answer", std::nullopt;
   if (srv.response.error_code != 0)
     return error = srv.response.message, std::nullopt;
@@ -221,7 +208,7 @@ bool WorkspaceClient::placeObject(const Eigen::Isometry3d& pose, std::string& er
   vrrw_physics::SetObjectPose srv;
   srv.request.object = object_;
   srv.request.pose = tf2::toMsg(pose);
-  if (!callTwice(place_, srv) || !srv.response.success)
+  if (!links_.call(kPlace, srv) || !srv.response.success)
     return error = "set_object_pose: " + srv.response.message, false;
   for (int i = 0; i < 100; ++i)
   {
@@ -241,8 +228,8 @@ void WorkspaceClient::startRecording(const std::string& bag_file)
     vrrw_msgs::DemoStart start;
     start.request.file = bag_file;
     start.request.robots = { robot_.name };
-    const bool recorder = demos_start_.waitForExistence(ros::Duration(3.0));
-    demos_recording_ = recorder && demos_start_.call(start) && start.response.success;
+    const bool recorder = ros::service::waitForService("/demos/start", ros::Duration(3.0));
+    demos_recording_ = recorder && links_.call("/demos/start", start) && start.response.success;
     if (recorder && !demos_recording_)
       ROS_WARN_STREAM("/demos/start: " << start.response.message << "; recording with demo_runner's own bag");
   }
@@ -266,7 +253,7 @@ Recording WorkspaceClient::stopRecording()
   if (demos_recording_)
   {
     vrrw_msgs::DemoStop stop;
-    if (demos_stop_.call(stop) && stop.response.success)
+    if (links_.call("/demos/stop", stop) && stop.response.success)
       demos_messages = stop.response.messages;
     else
       ROS_WARN_STREAM("/demos/stop: " << stop.response.message);
@@ -300,7 +287,7 @@ void WorkspaceClient::annotate(const std::string& kind, const std::string& detai
     vrrw_msgs::DemoAnnotate annotate;
     annotate.request.stamp = event.header.stamp;  // the bag's event at the instant the runner's clock says
     annotate.request.text = kind + " " + detail;
-    demos_annotate_.call(annotate);
+    links_.call("/demos/annotate", annotate);
   }
   std::lock_guard<std::mutex> lock(mutex_);
   if (!recording_)

@@ -16,6 +16,8 @@
 #include <vrrw_scene/scene.h>
 #include <vrrw_trajectory/joint_trajectory.h>
 
+#include "service_links.h"
+
 namespace vrrw_evaluation
 {
 /// \brief One sample of the TCP and the object, for the top view and the lift test.
@@ -100,7 +102,8 @@ private:
   tf2_ros::TransformListener tf_listener_;
   actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> arm_;
   actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper_;
-  ros::ServiceClient ik_, plan_, place_, demos_start_, demos_stop_, demos_annotate_;
+  std::string ik_, plan_;  ///< /<robot>/compute_ik, /<robot>/plan
+  ServiceLinks links_;
   bool demos_recording_ = false;
   ros::Subscriber joint_states_, contacts_;
   ros::Timer track_timer_;
