@@ -82,7 +82,8 @@ template <class Service>
 Service call(const std::string& name, Service srv = Service())
 {
   EXPECT_TRUE(ros::service::waitForService(name, ros::Duration(20.0))) << name;
-  EXPECT_TRUE(ros::service::call(name, srv)) << name;
+  // persistent: the server never closes it, so its answer cannot be lost (ros_comm#1976)
+  EXPECT_TRUE(ros::NodeHandle().serviceClient<Service>(name, true).call(srv)) << name;
   return srv;
 }
 }  // namespace vrrw_interaction_test

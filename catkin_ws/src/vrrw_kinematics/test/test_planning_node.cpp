@@ -25,7 +25,8 @@ template <typename Service>
 Service call(const std::string& name, Service service)
 {
   EXPECT_TRUE(ros::service::waitForService(name, ros::Duration(30.0))) << name;
-  EXPECT_TRUE(ros::service::call(name, service)) << name;
+  // persistent: the server never closes it, so its answer cannot be lost (ros_comm#1976)
+  EXPECT_TRUE(ros::NodeHandle().serviceClient<Service>(name, true).call(service)) << name;
   return service;
 }
 }  // namespace
