@@ -221,20 +221,28 @@ Segmentation segmentPickPlace(const RobotTrack& track, const Demonstration& demo
   const double close_time = close ? close->start : track.states.back().time;
   const double open_time = open ? open->start : track.states.back().time;
 
-  auto armSegments = [&](double from, double to, const char* first, const char* last, bool first_optional) {
+  // The arm motions between `from` and `to`, split in two at the rest next to the grasp: before it the
+  // motion into the grasp is `pick` (the ones before it `near_pick`), after it the motion out of the grasp is
+  // `back_to_near_pick` (the ones after it `final`). Stops at waypoints of the far instruction stay in it.
+  auto armSegments = [&](double from, double to, const char* first, const char* second, bool before_grasp) {
     std::vector<Interval> inside;
     for (const Interval& motion : arm)
       if (motion.second > from && motion.first < to)
         inside.push_back({ std::max(motion.first, from), std::min(motion.second, to) });
     if (inside.empty())
       return;
-    if (inside.size() >= 2)
-      out.segments.push_back({ first, inside.front().first, inside[inside.size() - 2].second, false, 0.0, "" });
-    else if (!first_optional)
-      out.warnings.push_back(std::string("no pause before '") + last + "': no '" + first + "' instruction");
-    out.segments.push_back({ last, inside.back().first, inside.back().second, false, 0.0, "" });
+    if (inside.size() == 1)
+    {
+      if (before_grasp)
+        out.warnings.push_back(std::string("no pause before '") + second + "': no '" + first + "' instruction");
+      out.segments.push_back({ second, inside.front().first, inside.front().second, false, 0.0, "" });
+      return;
+    }
+    const std::size_t split = before_grasp ? inside.size() - 1 : 1;  // the first motion of `second`
+    out.segments.push_back({ first, inside.front().first, inside[split - 1].second, false, 0.0, "" });
+    out.segments.push_back({ second, inside[split].first, inside.back().second, false, 0.0, "" });
   };
-  armSegments(arm.front().first, close_time, "near_pick", "pick", false);
+  armSegments(arm.front().first, close_time, "near_pick", "pick", true);
   if (!close)
   {
     out.warnings.push_back("robot '" + track.robot + "': the gripper never moved: no close_gripper");
@@ -243,7 +251,7 @@ Segmentation segmentPickPlace(const RobotTrack& track, const Demonstration& demo
   const std::string object = heldObject(demo, close->end, open_time, options.object_moved);
   out.segments.push_back({ "close_gripper", close->start, close->end, true, close->target, object });
   const std::size_t before_place = out.segments.size();
-  armSegments(close->end, open_time, "back_to_near_pick", "final", true);
+  armSegments(close->end, open_time, "back_to_near_pick", "final", false);
   for (std::size_t s = before_place; s < out.segments.size(); ++s)
     out.segments[s].object = object;
   if (!open)

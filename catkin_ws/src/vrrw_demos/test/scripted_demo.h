@@ -28,7 +28,10 @@ inline double minimumJerkRate(double s)
   return s <= 0 || s >= 1 ? 0.0 : 30 * s * s * (1 - s) * (1 - s);
 }
 
-inline ScriptedDemo scriptedPickPlace(double rate = 250.0, double jitter = 2e-4, unsigned seed = 1)
+/// `waypoint_stops`: the approach rests halfway and the carry rests above the place (a ghost-drive through a
+/// waypoint), with the same instruction boundaries.
+inline ScriptedDemo scriptedPickPlace(double rate = 250.0, double jitter = 2e-4, unsigned seed = 1,
+                                      bool waypoint_stops = false)
 {
   using namespace vrrw_demos;
   struct Motion
@@ -37,10 +40,17 @@ inline ScriptedDemo scriptedPickPlace(double rate = 250.0, double jitter = 2e-4,
     std::vector<double> to;
   };
   const std::vector<double> home{ 0, -1.57, 1.2, -1.2, -1.57, 0 };
-  const std::vector<Motion> arm{ { 0.5, 1.5, { 0.6, -1.2, 1.4, -1.7, -1.57, 0.3 } },    // near_pick
-                                 { 2.6, 1.0, { 0.6, -1.0, 1.6, -2.1, -1.57, 0.3 } },    // pick
-                                 { 4.9, 1.0, { 0.6, -1.2, 1.4, -1.7, -1.57, 0.3 } },    // back_to_near_pick
-                                 { 6.4, 2.0, { -0.5, -1.1, 1.5, -1.9, -1.57, -0.4 } } };  // final
+  std::vector<Motion> arm{ { 0.5, 1.5, { 0.6, -1.2, 1.4, -1.7, -1.57, 0.3 } },    // near_pick
+                           { 2.6, 1.0, { 0.6, -1.0, 1.6, -2.1, -1.57, 0.3 } },    // pick
+                           { 4.9, 1.0, { 0.6, -1.2, 1.4, -1.7, -1.57, 0.3 } },    // back_to_near_pick
+                           { 6.4, 2.0, { -0.5, -1.1, 1.5, -1.9, -1.57, -0.4 } } };  // final
+  if (waypoint_stops)
+    arm = { { 0.5, 0.6, { 0.3, -1.4, 1.3, -1.45, -1.57, 0.15 } },  // near_pick, halfway
+            { 1.4, 0.6, { 0.6, -1.2, 1.4, -1.7, -1.57, 0.3 } },
+            { 2.6, 1.0, { 0.6, -1.0, 1.6, -2.1, -1.57, 0.3 } },
+            { 4.9, 1.0, { 0.6, -1.2, 1.4, -1.7, -1.57, 0.3 } },
+            { 6.4, 1.2, { -0.5, -1.2, 1.4, -1.7, -1.57, -0.4 } },  // final, above the place
+            { 7.9, 0.5, { -0.5, -1.1, 1.5, -1.9, -1.57, -0.4 } } };
   const double close_start = 3.9, close_duration = 0.7, open_start = 8.8, open_duration = 0.7;
   ScriptedDemo out;
   RobotTrack& track = out.demo.robots.emplace_back();

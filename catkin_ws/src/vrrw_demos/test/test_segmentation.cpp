@@ -53,6 +53,16 @@ TEST(Segmentation, ScriptedPickPlaceFromGripperMotionAt1kHz)
   expectBoundaries(scripted, segmentPickPlace(scripted.demo.robots[0], scripted.demo));
 }
 
+TEST(Segmentation, WaypointStopsStayInTheirInstruction)
+{
+  // near_pick stops halfway, final above the place: pick is the motion into the grasp, back_to_near_pick the
+  // motion out of it, whatever stops the others make
+  const auto scripted = vrrw_demos_test::scriptedPickPlace(250.0, 2e-4, 1, true);
+  const Segmentation found = segmentPickPlace(scripted.demo.robots[0], scripted.demo);
+  expectBoundaries(scripted, found);
+  EXPECT_TRUE(found.warnings.empty());
+}
+
 TEST(Segmentation, WithoutBackToNearPickAndWithoutGripperSaysWhy)
 {
   auto scripted = vrrw_demos_test::scriptedPickPlace();

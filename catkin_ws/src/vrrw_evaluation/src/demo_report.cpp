@@ -114,7 +114,8 @@ std::string metricsJson(const DemoReport& r)
 {
   std::ostringstream j;
   j << "{\n  \"scene\": " << quoted(r.scene) << ",\n  \"seed\": " << r.seed << ",\n";
-  j << "  \"teach\": {\"seconds\": " << number(r.teach_seconds) << ", \"source\": " << quoted(r.teach_source)
+  j << "  \"teach\": {\"seconds\": " << number(r.teach_seconds) << ", \"start_stamp\": " << number(r.teach_start_stamp, 17)
+    << ", \"source\": " << quoted(r.teach_source)
     << ", \"plan_ms\": " << number(r.plan_ms) << ",\n    \"interfaces\": {";
   for (std::size_t i = 0; i < r.teach_interfaces.size(); ++i)
   {

@@ -7,6 +7,8 @@ import tempfile
 import time
 import unittest
 
+import yaml
+
 ROOT = os.environ.get('VRRW_ROOT', os.path.abspath(os.path.join(os.path.dirname(__file__), '../../../..')))
 VRRW = os.path.join(ROOT, 'vrrw')
 
@@ -41,6 +43,26 @@ class QuickDemoTest(unittest.TestCase):
         for before, after in zip(self.metrics['segments'], self.metrics['segments'][1:]):
             self.assertLess(before['start'], before['end'])
             self.assertLessEqual(before['end'], after['start'] + 1e-6)
+
+    def test_the_keyframe_rule_finds_the_scripts_instructions(self):
+        # `./vrrw demos segment` reads only arm speeds and gripper actions, not the script's annotations. Its
+        # boundaries are where motion starts and stops, the script's where its calls start and return (the open
+        # returns before the fingers stop): 0.41-0.45 s apart at most in quick runs. A motion given to the wrong
+        # instruction would move a boundary by a whole motion, 1.2 s at least (the free-drive descent).
+        found_file = os.path.join(self.out, 'keyframe.segments.yaml')
+        result = subprocess.run([VRRW, 'demos', 'segment', self.metrics['bag']['file'], '--out', found_file],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(found_file) as f:
+            found = yaml.safe_load(f)
+        keyframe = found['robots']['ur5e']['segments']
+        words = {'near_pick': 'move_to_near_pick', 'pick': 'move_to_pick', 'final': 'move_to_final'}
+        self.assertEqual([words.get(k['name'], k['name']) for k in keyframe], [s['name'] for s in self.metrics['segments']])
+        shift = found['start_stamp'] - self.metrics['teach']['start_stamp']
+        worst = max(max(abs(k['start'] + shift - s['start']), abs(k['end'] + shift - s['end']))
+                    for k, s in zip(keyframe, self.metrics['segments']))
+        print(f'keyframe rule: every boundary within {worst:.3f} s of the script\'s')
+        self.assertLess(worst, 1.0)
 
     def test_teach_only_through_operator_interfaces(self):
         used = self.metrics['teach']['interfaces']

@@ -28,6 +28,7 @@ struct DemoReport
   std::string teach_source;  ///< how the demonstration was made
   std::uint64_t seed = 0;
   double teach_seconds = 0.0;
+  double teach_start_stamp = 0.0;  ///< s of ROS time at the recording's start: segment times count from it
   /// Per instruction in order: the interfaces the scripted operator used (topics, services, actions).
   std::vector<std::pair<std::string, std::vector<std::string>>> teach_interfaces;
   std::uint64_t bag_messages = 0;

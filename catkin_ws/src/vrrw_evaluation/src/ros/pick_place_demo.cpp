@@ -216,6 +216,7 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
                         "down to the grasp, GripperCommand, ghost-drive back up and to the place (the " +
                         options_.table + " as its support surface)";
   report.teach_seconds = recording.seconds;
+  report.teach_start_stamp = recording.start_stamp;
   report.segments = demo.segments;
   report.plan_ms = plan_ms;
   report.message_counts["/" + client_.robot().name + "/joint_states"] = recording.joint_state_messages;
