@@ -74,13 +74,19 @@ void limits(ros::NodeHandle& nh, const RobotTrack& track, ReplayOptions& options
   }
 }
 
-/// Real mode: the controller holds each goal until confirmed (the operator said yes already).
-void confirmIfReal(const std::string& ns, bool real)
+/// Real mode: the controller runs each goal in simulation, then holds it until confirmed (the operator said yes
+/// already): asked again while it answers "still running in simulation", up to `seconds`.
+void confirmIfReal(const std::string& ns, bool real, double seconds)
 {
+  if (!real)
+    return;
+  const std::string service = ns + "arm_controller/confirm_real_execution";
   std_srvs::Trigger confirm;
-  if (real && (!ros::service::waitForService(ns + "arm_controller/confirm_real_execution", ros::Duration(5.0)) ||
-               !ros::service::call(ns + "arm_controller/confirm_real_execution", confirm)))
-    std::cerr << "replay: " << ns << "arm_controller/confirm_real_execution did not answer\n";
+  for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); ros::WallTime::now() < end;
+       ros::WallDuration(0.05).sleep())
+    if (ros::NodeHandle().serviceClient<std_srvs::Trigger>(service, true).call(confirm) && confirm.response.success)
+      return;
+  std::cerr << "replay: " << service << ": not confirmed (" << confirm.response.message << ")\n";
 }
 
 template <class Client, class Goal>
@@ -89,7 +95,7 @@ bool send(Client& client, const Goal& goal, const std::string& name, double time
 {
   client.sendGoal(goal);
   ros::Duration(0.1).sleep();
-  confirmIfReal(ns, real);
+  confirmIfReal(ns, real, timeout);
   if (!client.waitForResult(ros::Duration(timeout)))
   {
     client.cancelGoal();
@@ -223,7 +229,7 @@ int runReplay(int argc, char** argv)
   goal.trajectory = vrrw_trajectory::toMsg(path.trajectory);
   goal.trajectory.header.stamp = start;
   arm.sendGoal(goal);
-  confirmIfReal(ns, mode == "real");
+  confirmIfReal(ns, mode == "real", path.trajectory.duration() + 10.0);
   const double scale = path.time_scale / replay.speed;
   const double t0 = track.states.front().time;
   for (const GripperGoal& g : track.gripper_goals)

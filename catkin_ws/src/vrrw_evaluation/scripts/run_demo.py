@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """./vrrw demo: the paper's evaluation end to end, headless, with its own master under Xvfb.
 
-  run_demo.py --launch WORKSPACE.launch --scene S [--trials N] [--seed S] [--out DIR] [--quick]
+  run_demo.py --launch WORKSPACE.launch --scene S [--trials N] [--seed S] [--out DIR] [--quick] [--real NS [--yes]]
 
 Brings the workspace up in physics mode with rviz on a private display, runs demo_runner (teach,
 segment, replay, generalize; it saves rviz frames at the instruction boundaries), then draws the
-plots and frame strips beside the runner's metrics.json, report.md and index.html.
+plots and frame strips beside the runner's metrics.json, report.md and index.html. With --real NS, stage 5
+relays the demonstration to the real robot whose driver runs under NS on $ROS_MASTER_URI (demo_relay).
 """
 import argparse
 import os
@@ -32,12 +33,54 @@ def log(message):
     print(f'demo: {message}', flush=True)
 
 
-def runner_path():
+# ur_robot_driver's trajectory action and joint states, under the driver's namespace
+DRIVER_ACTION, DRIVER_STATES = 'scaled_pos_joint_traj_controller/follow_joint_trajectory', 'joint_states'
+
+
+def runner_path(name='demo_runner'):
     for directory in os.environ.get('CMAKE_PREFIX_PATH', '').split(':'):
-        path = os.path.join(directory, 'lib', 'vrrw_evaluation', 'demo_runner')
+        path = os.path.join(directory, 'lib', 'vrrw_evaluation', name)
         if os.access(path, os.X_OK):
             return path
-    sys.exit('demo: demo_runner is not built: run ./vrrw build')
+    sys.exit(f'demo: {name} is not built: run ./vrrw build')
+
+
+def driver_names(namespace):
+    base = '/' + namespace.strip('/') if namespace.strip('/') else ''
+    return f'{base}/{DRIVER_ACTION}', f'{base}/{DRIVER_STATES}'
+
+
+def check_driver(master_uri, namespace):
+    """--real: the robot's master answers and a driver serves its trajectory action there (before any stage
+    runs); one line naming what is missing otherwise."""
+    if not master_uri:
+        sys.exit('demo: --real: ROS_MASTER_URI is not set (the master the robot driver runs on)')
+    import rosgraph
+    action, _ = driver_names(namespace)
+    try:
+        topics = {name for name, _ in rosgraph.Master('/vrrw_demo', master_uri=master_uri).getPublishedTopics('')}
+    except Exception as error:  # refused, unreachable, not a master
+        sys.exit(f'demo: --real: no ROS master at {master_uri} ({error})')
+    if action + '/status' not in topics:
+        sys.exit(f'demo: --real {namespace}: no driver action {action} on {master_uri} (nothing publishes its status)')
+
+
+def relay(args, robot, master_uri, out):
+    """Stage 5: a vrrw controller in real mode beside the driver, then demo_relay through it."""
+    action, states = driver_names(args.real)
+    env = dict(os.environ, ROS_MASTER_URI=master_uri)
+    log(f'5 relay to {action} on {master_uri} ...')
+    with open(os.path.join(out, 'relay_controller.log'), 'w') as f:
+        controller = subprocess.Popen(['roslaunch', 'vrrw_control', 'controller.launch', f'robot:={robot}',
+                                       f'scene:={args.scene}', 'mode:=real', f'real_driver_action:={action}',
+                                       f'real_joint_states:={states}', 'publish_global_joint_states:=false'],
+                                      env=env, stdout=f, stderr=subprocess.STDOUT, start_new_session=True)
+    try:
+        return subprocess.run([runner_path('demo_relay'), '--scene', args.scene, '--bag',
+                               os.path.join(out, 'demonstration.bag'), '--out', os.path.join(out, 'relay.json')]
+                              + (['--yes'] if args.yes else []), env=env).returncode
+    finally:
+        stop([controller])
 
 
 def stop(processes):
@@ -86,8 +129,15 @@ def main():
     parser.add_argument('--seed', type=int, default=1)
     parser.add_argument('--out', default='demo_report')
     parser.add_argument('--quick', action='store_true', help='3 trials')
+    parser.add_argument('--real', metavar='NS', help="relay to the real robot whose driver runs under NS")
+    parser.add_argument('--yes', action='store_true', help='--real without asking')
     args = parser.parse_args()
     trials = 3 if args.quick else args.trials
+    robot_master = os.environ.get('ROS_MASTER_URI', '')
+    if args.real is not None:
+        check_driver(robot_master, args.real)
+    elif args.yes:
+        sys.exit('demo: --yes confirms --real NS, which was not given')
     for tool in ('Xvfb', 'import', 'roslaunch'):
         if not shutil.which(tool):
             sys.exit(f'demo: {tool} is not installed; run ./vrrw setup')
@@ -149,7 +199,10 @@ def main():
     if result.returncode != 0:
         for line in workspace_trouble(launch_log):
             print(f'demo: workspace.log: {line}', file=sys.stderr)
-    sys.exit(result.returncode)
+        sys.exit(result.returncode)
+    if args.real is not None:
+        robot = re.search(r'robot (\S+) picks', checked.stdout).group(1)
+        sys.exit(relay(args, robot, robot_master, out))
 
 
 if __name__ == '__main__':

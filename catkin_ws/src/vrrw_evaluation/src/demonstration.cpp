@@ -88,4 +88,17 @@ JointTrajectory thin(const JointTrajectory& trajectory, double period)
     out.points.push_back(trajectory.points.back());
   return out;
 }
+
+void addVelocities(JointTrajectory& trajectory)
+{
+  auto& p = trajectory.points;
+  for (std::size_t k = 0; k < p.size(); ++k)
+  {
+    p[k].velocities.assign(p[k].positions.size(), 0.0);
+    if (k == 0 || k + 1 == p.size())
+      continue;
+    for (std::size_t j = 0; j < p[k].positions.size(); ++j)
+      p[k].velocities[j] = (p[k + 1].positions[j] - p[k - 1].positions[j]) / (p[k + 1].time - p[k - 1].time);
+  }
+}
 }  // namespace vrrw_evaluation

@@ -1,9 +1,11 @@
-// bagInstructions on bags written here: both annotation forms, and the bad bags a user can hand it.
+// bagInstructions and bagTrack on bags written here: both annotation forms, and the bad bags a user can hand it.
 #include <gtest/gtest.h>
 
+#include <control_msgs/GripperCommandActionGoal.h>
 #include <cstdio>
 #include <fstream>
 #include <rosbag/bag.h>
+#include <sensor_msgs/JointState.h>
 #include <stdexcept>
 #include <vrrw_msgs/Event.h>
 
@@ -100,4 +102,43 @@ int main(int argc, char** argv)
   testing::InitGoogleTest(&argc, argv);
   ros::Time::init();
   return RUN_ALL_TESTS();
+}
+
+TEST(BagTrack, TheArmJointsInOrderAndTheGripperGoalsFromTheRecordingStart)
+{
+  const std::string file = testing::TempDir() + "track.bag";
+  std::remove(file.c_str());
+  {
+    rosbag::Bag bag(file, rosbag::bagmode::Write);
+    for (int k = 0; k < 5; ++k)
+    {
+      sensor_msgs::JointState state;  // names in another order than the arm's, a gripper joint among them
+      state.header.stamp = ros::Time(100.0 + 0.1 * k);
+      state.name = { "r_b", "r_finger", "r_a" };
+      state.position = { 2.0 + k, 0.5, 1.0 + k };
+      bag.write("/r/joint_states", state.header.stamp, state);
+      if (k == 2)  // a stamp already seen: kept once
+        bag.write("/r/joint_states", state.header.stamp, state);
+    }
+    control_msgs::GripperCommandActionGoal close, open;
+    close.goal.command.position = 0.8, close.goal.command.max_effort = 70.0;
+    bag.write("/r/gripper_controller/gripper_cmd/goal", ros::Time(100.2), close);
+    bag.write("/r/gripper_controller/gripper_cmd/goal", ros::Time(100.4), open);
+  }
+  const auto track = vrrw_evaluation::bagTrack(file, "r", { "r_a", "r_b" }, 100.0);
+  ASSERT_EQ(track.arm.points.size(), 5u);
+  EXPECT_NEAR(track.arm.points[3].time, 0.3, 1e-6);
+  EXPECT_EQ(track.arm.points[3].positions, (std::vector<double>{ 4.0, 5.0 }));
+  ASSERT_EQ(track.gripper_goals.size(), 2u);
+  EXPECT_EQ(track.gripper_goals[0], std::make_pair(0.8, 70.0));
+  EXPECT_EQ(track.gripper_goals[1], std::make_pair(0.0, 0.0));
+  try
+  {
+    vrrw_evaluation::bagTrack(file, "other", { "other_a" }, 100.0);
+    FAIL() << "a robot that is not in the bag";
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_EQ(std::string(e.what()), file + ": /other/joint_states: no recorded states of other's arm");
+  }
 }

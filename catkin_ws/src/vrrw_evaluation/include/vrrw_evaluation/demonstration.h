@@ -42,6 +42,8 @@ std::vector<double> positionsAt(const vrrw_trajectory::JointTrajectory& trajecto
 double jointRms(const vrrw_trajectory::JointTrajectory& reference, const vrrw_trajectory::JointTrajectory& measured);
 /// \brief max_j |a_j - b_j| over the joints both have (rad).
 double largestJointDifference(const std::vector<double>& a, const std::vector<double>& b);
+/// \brief Velocities by central differences of the positions over time; at rest at both ends.
+void addVelocities(vrrw_trajectory::JointTrajectory& trajectory);
 /// \brief The samples at least `period` apart, and the last, velocities kept: a recording as one goal.
 vrrw_trajectory::JointTrajectory thin(const vrrw_trajectory::JointTrajectory& trajectory, double period);
 }  // namespace vrrw_evaluation

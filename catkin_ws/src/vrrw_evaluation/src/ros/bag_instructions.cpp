@@ -2,6 +2,9 @@
 
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
+#include <algorithm>
+#include <control_msgs/GripperCommandActionGoal.h>
+#include <sensor_msgs/JointState.h>
 #include <stdexcept>
 #include <vrrw_msgs/Event.h>
 
@@ -50,5 +53,48 @@ std::vector<Segment> bagInstructions(const std::string& bag, double start_stamp)
   if (open)
     throw std::runtime_error(bag + ": /demos/events: " + segments.back().name + " has no end");
   return segments;
+}
+
+BagTrack bagTrack(const std::string& bag, const std::string& robot, const std::vector<std::string>& arm_joints,
+                  double start_stamp)
+{
+  BagTrack track;
+  track.arm.joint_names = arm_joints;
+  const std::string states = "/" + robot + "/joint_states", gripper = "/" + robot + "/gripper_controller/gripper_cmd/goal";
+  try
+  {
+    rosbag::Bag reader(bag, rosbag::bagmode::Read);
+    for (const rosbag::MessageInstance& m : rosbag::View(reader, rosbag::TopicQuery(std::vector<std::string>{ states, gripper })))
+    {
+      if (const auto goal = m.instantiate<control_msgs::GripperCommandActionGoal>())
+      {
+        track.gripper_goals.emplace_back(goal->goal.command.position, goal->goal.command.max_effort);
+        continue;
+      }
+      const auto msg = m.instantiate<sensor_msgs::JointState>();
+      if (!msg)
+        continue;
+      vrrw_trajectory::TrajectoryPoint point;
+      point.time = msg->header.stamp.toSec() - start_stamp;
+      for (const std::string& joint : arm_joints)
+      {
+        const auto found = std::find(msg->name.begin(), msg->name.end(), joint);
+        const std::size_t i = std::size_t(found - msg->name.begin());
+        if (found == msg->name.end() || i >= msg->position.size())
+          break;
+        point.positions.push_back(msg->position[i]);
+      }
+      if (point.positions.size() == arm_joints.size() &&
+          (track.arm.points.empty() || point.time > track.arm.points.back().time))
+        track.arm.points.push_back(point);
+    }
+  }
+  catch (const rosbag::BagException& e)
+  {
+    throw std::runtime_error(bag + ": " + e.what());
+  }
+  if (track.arm.points.size() < 2)
+    throw std::runtime_error(bag + ": " + states + ": no recorded states of " + robot + "'s arm");
+  return track;
 }
 }  // namespace vrrw_evaluation

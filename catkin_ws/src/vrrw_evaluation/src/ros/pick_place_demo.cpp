@@ -20,20 +20,6 @@ void progress(const std::string& line)
   std::printf("demo: %s\n", line.c_str());
   std::fflush(stdout);
 }
-
-/// Central differences of positions over time; at rest at both ends.
-void addVelocities(vrrw_trajectory::JointTrajectory& trajectory)
-{
-  auto& p = trajectory.points;
-  for (std::size_t k = 0; k < p.size(); ++k)
-  {
-    p[k].velocities.assign(p[k].positions.size(), 0.0);
-    if (k == 0 || k + 1 == p.size())
-      continue;
-    for (std::size_t j = 0; j < p[k].positions.size(); ++j)
-      p[k].velocities[j] = (p[k + 1].positions[j] - p[k - 1].positions[j]) / (p[k + 1].time - p[k - 1].time);
-  }
-}
 }  // namespace
 
 PickPlaceDemo::PickPlaceDemo(WorkspaceClient& client, GhostOperator& ghost, HandOperator& hand, DemoOptions options)
