@@ -96,12 +96,32 @@ TEST(Replay, OneSegmentAndBadInput)
   EXPECT_NE(output.find("of the running scene has joints [ ur5e_shoulder_pan_joint"), std::string::npos) << output;
 }
 
+TEST(Replay, RealModeSendsEachGoalToTheDriverOnceSimulated)
+{
+  ASSERT_EQ(g_mode, "real") << "replay_real.test runs this one alone";
+  const std::string goals = "/tmp/vrrw_replay_real_goals.jsonl";  // the stand-in driver's record
+  std::remove(goals.c_str());
+  std::string output;
+  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode real --yes", output), 0) << output;
+  // the controller ran each goal in simulation and held it for the confirmation, then relayed it
+  EXPECT_NE(output.find("replay: to the recorded start: SUCCEEDED"), std::string::npos) << output;
+  EXPECT_NE(output.find("\"result\": \"SUCCEEDED\""), std::string::npos) << output;
+  EXPECT_EQ(output.find("not confirmed"), std::string::npos) << output;
+  std::ifstream in(goals);
+  std::vector<std::string> received;
+  for (std::string line; std::getline(in, line);)
+    received.push_back(line);
+  ASSERT_EQ(received.size(), 2u) << output;  // the approach and the demonstration; gripper goals stay simulated
+  for (const std::string& goal : received)
+    EXPECT_NE(goal.find("\"joint_names\": [\"shoulder_pan_joint\""), std::string::npos) << goal;  // prefix stripped
+}
+
 int main(int argc, char** argv)
 {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "test_replay");
   for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]) == "fake" || std::string(argv[i]) == "physics")
+    if (std::string(argv[i]) == "fake" || std::string(argv[i]) == "physics" || std::string(argv[i]) == "real")
       g_mode = argv[i];
   return RUN_ALL_TESTS();
 }

@@ -39,8 +39,8 @@ class RealRelayTest(unittest.TestCase):
         cls.processes = [subprocess.Popen(['rosmaster', '--core', '-p', str(port)], env=cls.env,
                                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)]
         cls.goals = os.path.join(tempfile.mkdtemp(prefix='vrrw_stand_in_'), 'goals.jsonl')
-        cls.processes.append(subprocess.Popen([sys.executable, os.path.join(HERE, 'stand_in_driver.py'), '/stand_in',
-                                               cls.goals], env=cls.env))
+        cls.processes.append(subprocess.Popen([sys.executable, os.path.join(ROOT, 'catkin_ws/src/vrrw_control/test/driver_stand_in.py'),
+                                               '/stand_in', cls.goals], env=cls.env))
         master = rosgraph.Master('/test_demo_real', master_uri=cls.env['ROS_MASTER_URI'])
         for _ in range(300):
             try:

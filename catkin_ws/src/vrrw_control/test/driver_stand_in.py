@@ -1,9 +1,9 @@
-#!/usr/bin/env python3
-"""Plays ur_robot_driver under a namespace for test_demo_real.py: its trajectory action (takes a goal, ends at
-its last point, succeeds) and joint_states (unprefixed names, all zero at first); every goal it received is
-appended to a JSON-lines file.
+#!/usr/bin/python3
+"""Plays ur_robot_driver under a namespace (vrrw_evaluation's test_demo_real.py, vrrw_demos' replay_real.test):
+its trajectory action (takes a goal, ends at its last point, succeeds) and joint_states (unprefixed names, all
+zero at first); every goal it received is appended to a JSON-lines file.
 
-  stand_in_driver.py NS GOALS.jsonl
+  driver_stand_in.py NS GOALS.jsonl
 """
 import json
 import sys
@@ -18,8 +18,8 @@ JOINTS = ['shoulder_pan_joint', 'shoulder_lift_joint', 'elbow_joint', 'wrist_1_j
 
 
 def main():
-    namespace, record = sys.argv[1].rstrip('/'), sys.argv[2]
     rospy.init_node('stand_in_driver')
+    namespace, record = rospy.myargv(sys.argv)[1].rstrip('/'), rospy.myargv(sys.argv)[2]
     state = JointState(name=JOINTS, position=[0.0] * len(JOINTS))
     lock = threading.Lock()
 
