@@ -14,6 +14,7 @@
 #include <sensor_msgs/JointState.h>
 #include <std_srvs/Trigger.h>
 #include <vrrw_evaluation/demo_cell.h>
+#include <vrrw_evaluation/demo_report.h>
 #include <vrrw_evaluation/pick_place_task.h>
 #include <vrrw_kinematics/robot_model.h>
 #include <vrrw_trajectory/msg_conversions.h>
@@ -38,14 +39,6 @@ struct Relayed
 void progress(const std::string& line)
 {
   std::cout << "demo: relay: " << line << std::endl;
-}
-
-std::string quoted(const std::string& text)
-{
-  std::string out = "\"";
-  for (const char c : text)
-    out += c == '"' || c == '\\' ? std::string("\\") + c : c == '\n' ? std::string("\\n") : std::string(1, c);
-  return out + "\"";
 }
 
 class Relay
@@ -237,15 +230,15 @@ int run(const std::string& scene, const std::string& bag, const std::string& out
   }
   std::size_t succeeded = 0;
   std::ofstream json(out);
-  json << "{\"driver_action\": " << quoted(driver) << ", \"confirmed\": " << quoted(yes ? "--yes" : "typed yes")
+  json << "{\"driver_action\": " << jsonString(driver) << ", \"confirmed\": " << jsonString(yes ? "--yes" : "typed yes")
        << ",\n \"instructions\": [";
   for (std::size_t i = 0; i < relayed.size(); ++i)
   {
     const Relayed& r = relayed[i];
     succeeded += r.state == "SUCCEEDED";
-    json << (i ? ",\n   " : "") << "{\"name\": " << quoted(r.name) << ", \"kind\": " << quoted(r.kind)
-         << ", \"points\": " << r.points << ", \"seconds\": " << r.seconds << ", \"state\": " << quoted(r.state)
-         << ", \"message\": " << quoted(r.message) << "}";
+    json << (i ? ",\n   " : "") << "{\"name\": " << jsonString(r.name) << ", \"kind\": " << jsonString(r.kind)
+         << ", \"points\": " << r.points << ", \"seconds\": " << r.seconds << ", \"state\": " << jsonString(r.state)
+         << ", \"message\": " << jsonString(r.message) << "}";
   }
   json << "],\n \"succeeded\": " << succeeded << ", \"expected\": " << kInstructions.size() + 1 << "}\n";
   progress(std::to_string(succeeded) + " of " + std::to_string(kInstructions.size() + 1) +

@@ -20,28 +20,12 @@ std::string number(double value, int digits = 6)
   return text;
 }
 
-std::string quoted(const std::string& text)
-{
-  std::string out = "\"";
-  for (char c : text)
-  {
-    if (c == '"' || c == '\\')
-      out += '\\';
-    if (c == '\n')
-    {
-      out += "\\n";
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
-}
 
 std::string numberMap(const std::map<std::string, double>& values)
 {
   std::string out = "{";
   for (const auto& [name, value] : values)
-    out += (out.size() > 1 ? ", " : "") + quoted(name) + ": " + number(value);
+    out += (out.size() > 1 ? ", " : "") + jsonString(name) + ": " + number(value);
   return out + "}";
 }
 
@@ -97,6 +81,23 @@ std::string trialLine(const TrialRecord& t, const char* separator)
 }
 }  // namespace
 
+std::string jsonString(const std::string& text)
+{
+  std::string out = "\"";
+  for (char c : text)
+  {
+    if (c == '"' || c == '\\')
+      out += '\\';
+    if (c == '\n')
+    {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
 int DemoReport::successCount() const
 {
   int n = 0;
@@ -113,26 +114,26 @@ double DemoReport::successRate() const
 std::string metricsJson(const DemoReport& r)
 {
   std::ostringstream j;
-  j << "{\n  \"scene\": " << quoted(r.scene) << ",\n  \"seed\": " << r.seed << ",\n";
+  j << "{\n  \"scene\": " << jsonString(r.scene) << ",\n  \"seed\": " << r.seed << ",\n";
   j << "  \"teach\": {\"seconds\": " << number(r.teach_seconds) << ", \"start_stamp\": " << number(r.teach_start_stamp, 17)
-    << ", \"source\": " << quoted(r.teach_source)
+    << ", \"source\": " << jsonString(r.teach_source)
     << ", \"plan_ms\": " << number(r.plan_ms) << ",\n    \"interfaces\": {";
   for (std::size_t i = 0; i < r.teach_interfaces.size(); ++i)
   {
-    j << (i ? ", " : "") << quoted(r.teach_interfaces[i].first) << ": [";
+    j << (i ? ", " : "") << jsonString(r.teach_interfaces[i].first) << ": [";
     for (std::size_t k = 0; k < r.teach_interfaces[i].second.size(); ++k)
-      j << (k ? ", " : "") << quoted(r.teach_interfaces[i].second[k]);
+      j << (k ? ", " : "") << jsonString(r.teach_interfaces[i].second[k]);
     j << "]";
   }
   j << "}},\n";
-  j << "  \"bag\": {\"messages\": " << r.bag_messages << ", \"file\": " << quoted(r.bag_file) << ", \"topics\": {";
+  j << "  \"bag\": {\"messages\": " << r.bag_messages << ", \"file\": " << jsonString(r.bag_file) << ", \"topics\": {";
   std::string sep;
   for (const auto& [topic, count] : r.message_counts)
-    j << sep << quoted(topic) << ": " << count, sep = ", ";
+    j << sep << jsonString(topic) << ": " << count, sep = ", ";
   j << "}},\n  \"segments\": [";
   sep.clear();
   for (const Segment& s : r.segments)
-    j << sep << "{\"name\": " << quoted(s.name) << ", \"start\": " << number(s.start) << ", \"end\": " << number(s.end)
+    j << sep << "{\"name\": " << jsonString(s.name) << ", \"start\": " << number(s.start) << ", \"end\": " << number(s.end)
       << "}",
         sep = ", ";
   j << "],\n  \"replay\": {\"joint_rms_rad\": " << number(r.replay_joint_rms_rad)
@@ -145,7 +146,7 @@ std::string metricsJson(const DemoReport& r)
   sep.clear();
   for (const TrialRecord& t : r.trials)
     if (!t.success)
-      j << sep << "{\"trial\": " << t.trial << ", \"reason\": " << quoted(t.reason) << "}", sep = ", ";
+      j << sep << "{\"trial\": " << t.trial << ", \"reason\": " << jsonString(t.reason) << "}", sep = ", ";
   j << "],\n    \"trial_results\": [";
   sep.clear();
   for (const TrialRecord& t : r.trials)
@@ -153,7 +154,7 @@ std::string metricsJson(const DemoReport& r)
       << ", \"yaw_deg\": " << number(t.yaw_deg) << ", \"executed\": " << (t.executed ? "true" : "false")
       << ", \"success\": " << (t.success ? "true" : "false") << ", \"final_error_m\": " << number(t.final_error_m)
       << ", \"final_angle_deg\": " << number(t.final_angle_deg) << ", \"ik_ms\": " << number(t.ik_ms)
-      << ", \"reason\": " << quoted(t.reason) << "}",
+      << ", \"reason\": " << jsonString(t.reason) << "}",
         sep = ",";
   j << "]},\n  \"physics\": {\"rtf\": " << number(r.physics_rtf) << "},\n";
   j << "  \"stage_seconds\": " << numberMap(r.stage_seconds) << ",\n";

@@ -13,19 +13,6 @@ namespace vrrw_interaction
 {
 namespace
 {
-/// Over a persistent connection, reopened after a drop: roscpp 1.15 may lose the answer of a one-shot call
-/// when the server closes its connection (ros_comm#1976).
-template <class Service>
-bool callPhysics(ros::ServiceClient& client, const std::string& name, Service& srv)
-{
-  if (!client.isValid())
-    client = ros::NodeHandle().serviceClient<Service>(name, true);
-  if (client.call(srv))
-    return true;
-  client.shutdown();
-  return false;
-}
-
 std::string describe(const Eigen::Vector3d& p)
 {
   char buffer[96];
@@ -99,7 +86,9 @@ std::string FreeDrive::set(const std::string& robot, bool on)
     vrrw_physics::SetMode srv;
     srv.request.robot = robot;
     srv.request.mode = on ? "compliant" : "rigid";
-    if (!callPhysics(set_mode_, "/physics/set_mode", srv) || !srv.response.success)
+    // persistent: the server keeps the connection, so its answer cannot be lost (roscpp 1.15, ros_comm#1976)
+    if (!ros::NodeHandle().serviceClient<vrrw_physics::SetMode>("/physics/set_mode", true).call(srv) ||
+        !srv.response.success)
       return "/physics/set_mode " + srv.request.mode + " failed: " +
              (srv.response.message.empty() ? "is the physics node running?" : srv.response.message);
   }
@@ -368,7 +357,8 @@ bool FreeDrive::spring(const std::string& id, const std::string& body, const Eig
   if (angular)  // see the README: the wrist holds its orientation within 2 deg over the drag benchmark
     srv.request.angular_stiffness = angular_stiffness_, srv.request.angular_damping = angular_damping_;
   srv.request.release = release;
-  if (callPhysics(set_spring_, "/physics/set_spring", srv) && srv.response.success)
+  if (ros::NodeHandle().serviceClient<vrrw_physics::SetSpring>("/physics/set_spring", true).call(srv) &&
+      srv.response.success)  // persistent, as set_mode above
     return true;
   ROS_WARN_STREAM("/physics/set_spring " << id << " on " << body << ": "
                                          << (srv.response.message.empty() ? "no physics node" : srv.response.message));

@@ -59,7 +59,6 @@ private:
   std::map<std::string, std::unique_ptr<Tracker>> trackers_;
   std::map<std::string, ros::Publisher> active_pubs_, commands_;
   std::vector<ros::ServiceServer> services_;
-  ros::ServiceClient set_mode_, set_spring_;
   ros::Publisher spring_target_, hand_pub_, hand_markers_;
   ros::Timer discover_timer_, tick_timer_;
   std::unique_ptr<interactive_markers::InteractiveMarkerServer> mouse_;

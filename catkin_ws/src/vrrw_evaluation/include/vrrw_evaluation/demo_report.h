@@ -51,6 +51,8 @@ struct DemoReport
   double successRate() const;
 };
 
+/// \brief `text` as a JSON string: quoted, with quotes, backslashes and newlines escaped.
+std::string jsonString(const std::string& text);
 /// \brief metrics.json (the keys, dots as nesting, and more).
 std::string metricsJson(const DemoReport& report);
 /// \brief report.md: the metrics table and the trials.
