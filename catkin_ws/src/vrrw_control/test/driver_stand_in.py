@@ -25,10 +25,12 @@ def main():
 
     def execute(goal):
         points = goal.trajectory.points
-        with lock:
+        with lock:  # there at once, and said so (a real arm's joint_states show it there when it reports)
             for k, name in enumerate(goal.trajectory.joint_names):
                 if name in JOINTS:
                     state.position[JOINTS.index(name)] = points[-1].positions[k]
+            state.header.stamp = rospy.Time.now()
+            publisher.publish(state)
         with open(record, 'a') as f:
             f.write(json.dumps({'joint_names': list(goal.trajectory.joint_names), 'points': len(points),
                                 'first': list(points[0].positions), 'last': list(points[-1].positions),
@@ -36,10 +38,10 @@ def main():
                     + '\n')
         server.set_succeeded(FollowJointTrajectoryResult(error_string='stand-in executed'))
 
+    publisher = rospy.Publisher(namespace + '/joint_states', JointState, queue_size=10)
     server = actionlib.SimpleActionServer(namespace + '/scaled_pos_joint_traj_controller/follow_joint_trajectory',
                                           FollowJointTrajectoryAction, execute, auto_start=False)
     server.start()
-    publisher = rospy.Publisher(namespace + '/joint_states', JointState, queue_size=10)
     rate = rospy.Rate(50)
     while not rospy.is_shutdown():
         with lock:

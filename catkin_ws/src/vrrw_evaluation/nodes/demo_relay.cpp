@@ -86,6 +86,18 @@ public:
     return q;
   }
 
+  /// Waits until the measured arm is within `tolerance` of `q` (the controller's gate checks the start of a
+  /// goal against it: the driver's joint_states may trail its result).
+  void waitUntilAt(const std::vector<std::string>& joints, const std::vector<double>& q, double tolerance, double seconds)
+  {
+    for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); ros::WallTime::now() < end;)
+    {
+      const auto now = measured(joints);
+      if (now && largestJointDifference(*now, q) < tolerance)
+        return;
+    }
+  }
+
   Relayed arm(const std::string& name, const vrrw_trajectory::JointTrajectory& motion)
   {
     Relayed r{ name, "arm", "", "", motion.points.size(), motion.duration() };
@@ -223,6 +235,7 @@ int run(const std::string& scene, const std::string& bag, const std::string& out
     {
       vrrw_trajectory::JointTrajectory motion = slice(track.arm, instruction.start, instruction.end);
       addVelocities(motion);
+      relay.waitUntilAt(joints, motion.points.front().positions, 0.005, 2.0);
       relayed.push_back(relay.arm(instruction.name, motion));
     }
     progress(relayed.back().name + ": " + relayed.back().state + " (" + relayed.back().kind + ") " +
