@@ -6,8 +6,6 @@
 #include <cstdlib>
 #include <iostream>
 #include <ros/ros.h>
-#include <vrrw_scene/scene_loader.h>
-
 #include <vrrw_evaluation/demo_cell.h>
 
 #include "../src/ros/pick_place_demo.h"
