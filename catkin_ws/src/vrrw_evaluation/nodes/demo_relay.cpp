@@ -6,6 +6,7 @@
 // controller runs it in simulation, holds it until the confirmation sent here, then hands it to the driver.
 // Gripper goals run in simulation only (a real gripper has its own driver). Without --yes the operator types yes.
 #include <actionlib/client/simple_action_client.h>
+#include <algorithm>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <fstream>
@@ -39,6 +40,11 @@ struct Relayed
 void progress(const std::string& line)
 {
   std::cout << "demo: relay: " << line << std::endl;
+}
+
+void progress(const Relayed& r)
+{
+  progress(r.name + ": " + r.state + " (" + r.kind + ") " + r.message);
 }
 
 class Relay
@@ -220,7 +226,7 @@ int run(const std::string& scene, const std::string& bag, const std::string& out
     return std::cerr << "demo: relay: no /" << cell.robot.name << "/joint_states with the arm's joints\n", 1;
   const std::vector<double> start = positionsAt(track.arm, instructions.front().start);
   relayed.push_back(relay.arm("to_the_recorded_start", approach(joints, *from, start, max_velocity)));
-  progress(relayed.back().name + ": " + relayed.back().state + " " + relayed.back().message);
+  progress(relayed.back());
   std::size_t gripper_goal = 0;
   for (const Segment& instruction : instructions)
   {
@@ -238,25 +244,24 @@ int run(const std::string& scene, const std::string& bag, const std::string& out
       relay.waitUntilAt(joints, motion.points.front().positions, 0.005, 2.0);
       relayed.push_back(relay.arm(instruction.name, motion));
     }
-    progress(relayed.back().name + ": " + relayed.back().state + " (" + relayed.back().kind + ") " +
-             relayed.back().message);
+    progress(relayed.back());
   }
-  std::size_t succeeded = 0;
+  const std::size_t expected = kInstructions.size() + 1, succeeded = std::count_if(
+      relayed.begin(), relayed.end(), [](const Relayed& r) { return r.state == "SUCCEEDED"; });
   std::ofstream json(out);
   json << "{\"driver_action\": " << jsonString(driver) << ", \"confirmed\": " << jsonString(yes ? "--yes" : "typed yes")
        << ",\n \"instructions\": [";
   for (std::size_t i = 0; i < relayed.size(); ++i)
   {
     const Relayed& r = relayed[i];
-    succeeded += r.state == "SUCCEEDED";
     json << (i ? ",\n   " : "") << "{\"name\": " << jsonString(r.name) << ", \"kind\": " << jsonString(r.kind)
          << ", \"points\": " << r.points << ", \"seconds\": " << r.seconds << ", \"state\": " << jsonString(r.state)
          << ", \"message\": " << jsonString(r.message) << "}";
   }
-  json << "],\n \"succeeded\": " << succeeded << ", \"expected\": " << kInstructions.size() + 1 << "}\n";
-  progress(std::to_string(succeeded) + " of " + std::to_string(kInstructions.size() + 1) +
-           " goals succeeded (arm goals through " + driver + "); " + out);
-  return succeeded == kInstructions.size() + 1 ? 0 : 1;
+  json << "],\n \"succeeded\": " << succeeded << ", \"expected\": " << expected << "}\n";
+  progress(std::to_string(succeeded) + " of " + std::to_string(expected) + " goals succeeded (arm goals through " +
+           driver + "); " + out);
+  return succeeded == expected ? 0 : 1;
 }
 }  // namespace
 

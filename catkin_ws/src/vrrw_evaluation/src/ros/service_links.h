@@ -13,7 +13,7 @@ class ServiceLinks
 {
 public:
   /// \brief Calls `name` over its connection (opened at the first call, reopened after a drop); false when
-  /// no answer came back.
+  /// no answer came back. From one thread (the runner calls from its main thread).
   template <class Service>
   bool call(const std::string& name, Service& srv)
   {
