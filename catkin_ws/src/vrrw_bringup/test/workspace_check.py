@@ -8,6 +8,7 @@ import rospy
 import rostest
 from control_msgs.msg import FollowJointTrajectoryAction, FollowJointTrajectoryGoal, FollowJointTrajectoryResult
 from sensor_msgs.msg import JointState
+from vrrw_common.services import PersistentServices
 from vrrw_msgs.srv import CheckState, Plan
 
 GOALS = [[0.9, -1.2, 1.4, -1.8, -1.57, 0.3], [-0.6, -1.9, 2.0, -1.6, -1.2, -0.5], [0.0, -1.57, 1.57, -1.57, -1.57, 0.0]]
@@ -17,10 +18,9 @@ class PlanAndExecute(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node('workspace_check')
-        for name in ('/ur5e/plan', '/ur5e/check_state'):
-            rospy.wait_for_service(name, 60)
-        cls.plan = rospy.ServiceProxy('/ur5e/plan', Plan)
-        cls.check = rospy.ServiceProxy('/ur5e/check_state', CheckState)
+        services = PersistentServices(wait_seconds=60)
+        cls.plan = lambda **request: services.call('/ur5e/plan', Plan, **request)
+        cls.check = lambda **request: services.call('/ur5e/check_state', CheckState, **request)
         cls.arm = actionlib.SimpleActionClient('/ur5e/arm_controller/follow_joint_trajectory',
                                                FollowJointTrajectoryAction)
         assert cls.arm.wait_for_server(rospy.Duration(60))

@@ -1,13 +1,14 @@
 // vrrw_arm: execute a CSV, joint values or a gripper position on a running workspace's controller,
 // or plan a motion through /<robot>/plan and execute it; prints progress and the result.
 #include <actionlib/client/simple_action_client.h>
-#include <charconv>
 #include <cmath>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <iostream>
-#include <map>
 #include <ros/ros.h>
+#include <vrrw_common/options.h>
+#include <vrrw_common/ros/persistent_service.h>
+#include <vrrw_common/ros/workspace_check.h>
 #include <vrrw_msgs/Plan.h>
 #include <vrrw_trajectory/csv.h>
 #include <vrrw_trajectory/msg_conversions.h>
@@ -20,46 +21,12 @@ const char* const kUsage =
     "Joint values are the robot's arm joints in /scene/robots/ROBOT/arm_joints order (rad). --duration 0\n"
     "(default) lets the controller choose the fastest motion within the limits (fake and physics mode).\n";
 
+using vrrw_common::Options;
+
 struct UsageError : std::runtime_error
 {
   using std::runtime_error::runtime_error;
 };
-
-/// `--key value` or `--key=value` after the command and the robot.
-std::map<std::string, std::string> options(int argc, char** argv)
-{
-  std::map<std::string, std::string> found;
-  for (int i = 3; i < argc; ++i)
-  {
-    std::string word = argv[i];
-    if (word.rfind("--", 0) != 0)
-      throw UsageError("unexpected argument '" + word + "'");
-    const auto equals = word.find('=');
-    if (equals != std::string::npos)
-      found[word.substr(2, equals - 2)] = word.substr(equals + 1);
-    else if (i + 1 < argc)
-      found[word.substr(2)] = argv[++i];
-    else
-      throw UsageError(word + " needs a value");
-  }
-  return found;
-}
-
-std::vector<double> numbers(const std::string& text, const std::string& what)
-{
-  std::vector<double> values;
-  for (size_t begin = 0; begin <= text.size();)
-  {
-    const size_t comma = std::min(text.find(',', begin), text.size());
-    double value = 0.0;
-    const auto parsed = std::from_chars(text.data() + begin, text.data() + comma, value);
-    if (parsed.ec != std::errc() || parsed.ptr != text.data() + comma || !std::isfinite(value))
-      throw std::runtime_error(what + ": '" + text.substr(begin, comma - begin) + "' is not a finite number");
-    values.push_back(value);
-    begin = comma + 1;
-  }
-  return values;
-}
 
 std::vector<std::string> armJoints(const std::string& robot)
 {
@@ -70,15 +37,10 @@ std::vector<std::string> armJoints(const std::string& robot)
   return joints;
 }
 
-trajectory_msgs::JointTrajectory toJoints(const std::string& robot, const std::string& text, double duration)
+trajectory_msgs::JointTrajectory toJoints(const std::string& robot, const Options& o, double duration)
 {
   const auto joints = armJoints(robot);
-  const auto q = numbers(text, "--joints");
-  if (q.size() != joints.size())
-    throw std::runtime_error("--joints: " + std::to_string(q.size()) + " values for the " +
-                             std::to_string(joints.size()) + " arm joints of " + robot);
-  if (!(duration >= 0.0))
-    throw std::runtime_error("--duration: must be >= 0 s");
+  const auto q = o.list("joints", joints.size());
   trajectory_msgs::JointTrajectory t;
   t.joint_names = joints;
   t.points.resize(1);
@@ -149,33 +111,26 @@ int gripper(const std::string& robot, double position, double effort)
   return client.getState() == actionlib::SimpleClientGoalState::SUCCEEDED ? 0 : 1;
 }
 
-trajectory_msgs::JointTrajectory plan(const std::string& robot, const std::map<std::string, std::string>& o)
+trajectory_msgs::JointTrajectory plan(const std::string& robot, const Options& o)
 {
   vrrw_msgs::Plan srv;
-  if (o.count("joints"))
+  if (o.oneOf({ "joints", "pose" }) == "joints")
   {
     srv.request.goal_joints.name = armJoints(robot);
-    srv.request.goal_joints.position = toJoints(robot, o.at("joints"), 0.0).points[0].positions;
+    srv.request.goal_joints.position = toJoints(robot, o, 0.0).points[0].positions;
   }
-  else if (o.count("pose"))
+  else
   {
-    const auto p = numbers(o.at("pose"), "--pose");
-    if (p.size() != 7)
-      throw std::runtime_error("--pose: " + std::to_string(p.size()) + " values, expected x,y,z,qx,qy,qz,qw");
+    const auto p = o.list("pose", 7);
     auto& pose = srv.request.goal_pose;
-    pose.header.frame_id = o.count("frame") ? o.at("frame") : "world";
+    pose.header.frame_id = o.text("frame", "world");
     pose.pose.position.x = p[0], pose.pose.position.y = p[1], pose.pose.position.z = p[2];
     pose.pose.orientation.x = p[3], pose.pose.orientation.y = p[4], pose.pose.orientation.z = p[5];
     pose.pose.orientation.w = p[6];
   }
-  else
-    throw UsageError("move: give --joints or --pose");
-  srv.request.seed = o.count("seed") ? static_cast<uint64_t>(numbers(o.at("seed"), "--seed").at(0)) : 0;
+  srv.request.seed = o.count("seed", 0, 0, UINT64_MAX);
   const std::string service = "/" + robot + "/plan";
-  if (!ros::service::waitForService(service, ros::Duration(5.0)))
-    throw std::runtime_error(service + ": no planning service (is the workspace up? ./vrrw up SCENE)");
-  if (!ros::service::call(service, srv))
-    throw std::runtime_error(service + ": the call failed");
+  vrrw_common::services().call(service, srv);
   if (srv.response.error_code != 0)
     throw std::runtime_error(service + ": " + srv.response.message);
   std::cout << "planned in " << srv.response.planning_time << " s: " << srv.response.trajectory.points.size()
@@ -188,33 +143,29 @@ int run(int argc, char** argv)
   const std::string command = argc > 1 ? argv[1] : "";
   if (command != "send" && command != "move")
     throw UsageError(command.empty() ? "no command" : "unknown command '" + command + "'");
-  if (argc < 3)
+  if (argc < 3 || std::string(argv[2]).rfind("--", 0) == 0)
     throw UsageError(command + ": no robot");
   const std::string robot = argv[2];
-  const auto o = options(argc, argv);
-  if (!ros::master::check())
-    throw std::runtime_error("no ROS master at " + ros::master::getURI() + " (start the workspace: ./vrrw up SCENE)");
+  const Options o(argc, argv, 3, { "csv", "joints", "duration", "gripper", "effort", "pose", "frame", "seed" });
+  o.expectPositional({});
+  const std::string what = command == "move" ? o.oneOf({ "joints", "pose" }) : o.oneOf({ "csv", "joints", "gripper" });
+  const std::string action = "/" + robot + (what == "gripper" ? "/gripper_controller/gripper_cmd" : "/arm_controller/follow_joint_trajectory");
+  vrrw_common::checkWorkspace({ robot, { action }, command == "move" ? std::vector<std::string>{ "/" + robot + "/plan" } : std::vector<std::string>{} });
+  ros::AsyncSpinner spinner(1);  // after the check: its NodeHandle would wait for a master forever
+  spinner.start();
   if (command == "move")
     return execute(robot, plan(robot, o));
-  if (o.count("csv"))
-    return execute(robot, fromCsv(robot, o.at("csv")));
-  if (o.count("joints"))
-  {
-    const double duration = o.count("duration") ? numbers(o.at("duration"), "--duration").at(0) : 0.0;
-    return execute(robot, toJoints(robot, o.at("joints"), duration));
-  }
-  if (o.count("gripper"))
-    return gripper(robot, numbers(o.at("gripper"), "--gripper").at(0),
-                   o.count("effort") ? numbers(o.at("effort"), "--effort").at(0) : 0.0);
-  throw UsageError("send: give --csv, --joints or --gripper");
+  if (what == "csv")
+    return execute(robot, fromCsv(robot, o.text("csv")));
+  if (what == "joints")
+    return execute(robot, toJoints(robot, o, o.number("duration", 0.0, vrrw_common::Range::closed(0.0, 86400.0, "s"))));
+  return gripper(robot, o.number("gripper"), o.number("effort", 0.0));
 }
 }  // namespace
 
 int main(int argc, char** argv)
 {
   ros::init(argc, argv, "vrrw_arm", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
-  ros::AsyncSpinner spinner(1);
-  spinner.start();
   try
   {
     return run(argc, argv);
@@ -222,6 +173,11 @@ int main(int argc, char** argv)
   catch (const UsageError& e)
   {
     std::cerr << "vrrw_arm: " << e.what() << "\n" << kUsage;
+    return 2;
+  }
+  catch (const vrrw_common::OptionError& e)
+  {
+    std::cerr << "vrrw_arm: " << e.what() << "\n";
     return 2;
   }
   catch (const std::exception& e)

@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <sstream>
+#include <vrrw_common/joint_mapping.h>
 #include <vrrw_control/splice_segment.h>
 #include <vrrw_control/trajectory_interpolator.h>
 #include <vrrw_control/trajectory_validator.h>
@@ -69,27 +69,21 @@ TrajectoryValidator::TrajectoryValidator(std::vector<JointLimits> limits, Valida
 bool TrajectoryValidator::checkJoints(const vrrw_trajectory::JointTrajectory& goal, Validation& v,
                                       std::vector<size_t>& order) const
 {
-  std::map<std::string, size_t> robot;
-  for (size_t j = 0; j < limits_.size(); ++j)
-    robot[limits_[j].name] = j;
-  std::map<std::string, size_t> seen;
-  for (size_t k = 0; k < goal.joint_names.size(); ++k)
+  std::vector<std::string> robot;
+  for (const auto& joint : limits_)
+    robot.push_back(joint.name);
+  try
   {
-    const auto& name = goal.joint_names[k];
-    if (!seen.emplace(name, k).second)
-      return reject(v, Validation::Error::InvalidJoints, -1, name, "named twice in joint_names");
-    if (!robot.count(name))
-      return reject(v, Validation::Error::InvalidJoints, -1, name, "not a joint of this controller");
+    order = vrrw_common::jointMapping(goal.joint_names, robot, vrrw_common::OtherJoints::Refuse);
+    return true;
   }
-  order.assign(limits_.size(), 0);
-  for (size_t j = 0; j < limits_.size(); ++j)
+  catch (const vrrw_common::JointMappingError& e)
   {
-    const auto it = seen.find(limits_[j].name);
-    if (it == seen.end())
-      return reject(v, Validation::Error::InvalidJoints, -1, limits_[j].name, "missing from joint_names");
-    order[j] = it->second;
+    const std::string reason = e.reason() == "named twice" ? "named twice in joint_names" :
+                               e.reason() == "missing"     ? "missing from joint_names" :
+                                                             "not a joint of this controller";
+    return reject(v, Validation::Error::InvalidJoints, -1, e.joint(), reason);
   }
-  return true;
 }
 
 bool TrajectoryValidator::checkPoints(const vrrw_trajectory::JointTrajectory& goal, const std::vector<size_t>& order,

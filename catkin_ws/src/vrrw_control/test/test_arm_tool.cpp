@@ -112,16 +112,16 @@ TEST(ArmTool, BadInputIsOneLineNamingIt)
 {
   auto run = runTool("send nosuchrobot --joints 0,0,0,0,0,0");
   EXPECT_EQ(run.status, 1);
-  EXPECT_EQ(run.output, "vrrw_arm: robot 'nosuchrobot': no /scene/robots/nosuchrobot/arm_joints (is the workspace up "
-                        "with this robot? ./vrrw up SCENE)\n");
+  EXPECT_EQ(run.output, "vrrw_arm: robot 'nosuchrobot' is not in the running workspace (its robots: ur5e)\n");
   run = runTool("send ur5e --joints 0,0,0");
-  EXPECT_EQ(run.output, "vrrw_arm: --joints: 3 values for the 6 arm joints of ur5e\n");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(run.output, "vrrw_arm: --joints: 3 values, expected 6\n");
   run = runTool("send ur5e --joints 0,0,nan,0,0,0");
-  EXPECT_EQ(run.output, "vrrw_arm: --joints: 'nan' is not a finite number\n");
+  EXPECT_EQ(run.output, "vrrw_arm: --joints value 3: 'nan' is not a finite number\n");
   run = runTool("send ur5e --csv /nonexistent/demo.csv");
   EXPECT_EQ(run.output, "vrrw_arm: /nonexistent/demo.csv:0: cannot open for reading\n");
   run = runTool("move ur5e --pose 0,0,0,0,0,0");
-  EXPECT_EQ(run.output, "vrrw_arm: --pose: 6 values, expected x,y,z,qx,qy,qz,qw\n");
+  EXPECT_EQ(run.output, "vrrw_arm: --pose: 6 values, expected 7\n");
   run = runTool("fly ur5e");
   EXPECT_EQ(run.status, 2);
   EXPECT_EQ(run.output.rfind("vrrw_arm: unknown command 'fly'\nusage: vrrw_arm send ROBOT", 0), 0u) << run.output;

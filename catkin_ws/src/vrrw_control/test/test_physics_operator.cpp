@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <std_msgs/Bool.h>
 #include <std_srvs/Trigger.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include <tf2_ros/transform_listener.h>
 #include <vrrw_physics/SetMode.h>
 #include <vrrw_physics/SetSpring.h>
@@ -60,7 +61,7 @@ template <class Service>
 void call(const std::string& name, Service& srv)
 {
   ASSERT_TRUE(ros::service::waitForService(name, ros::Duration(10.0))) << name;
-  ASSERT_TRUE(ros::service::call(name, srv)) << name;
+  ASSERT_TRUE(vrrw_common::services().tryCall(name, srv)) << name;
   ASSERT_TRUE(srv.response.success) << name << ": " << srv.response.message;
 }
 

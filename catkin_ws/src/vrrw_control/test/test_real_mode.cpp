@@ -5,6 +5,7 @@
 #include <actionlib/server/action_server.h>
 #include <gtest/gtest.h>
 #include <std_srvs/Trigger.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include "ros_test_helpers.h"
 
 using namespace vrrw_control_test;
@@ -83,7 +84,7 @@ JointStateLog* states = nullptr;
 bool confirm(std::string& message)
 {
   std_srvs::Trigger t;
-  EXPECT_TRUE(ros::service::call("/ur5e/arm_controller/confirm_real_execution", t));
+  EXPECT_TRUE(vrrw_common::services().tryCall("/ur5e/arm_controller/confirm_real_execution", t));
   message = t.response.message;
   return t.response.success;
 }

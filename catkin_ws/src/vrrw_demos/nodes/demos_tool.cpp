@@ -15,14 +15,15 @@
 #include <vrrw_demos/demo_csv.h>
 #include <vrrw_demos/demo_error.h>
 #include <vrrw_demos/segmentation.h>
+#include <vrrw_common/options.h>
 #include <vrrw_trajectory/whole_file.h>
 
 #include "bag_demo.h"
 #include "replay.h"
 #include "segment_report.h"
-#include "tool_options.h"
 
 using namespace vrrw_demos;
+using vrrw_common::Options;
 
 namespace
 {
@@ -42,7 +43,7 @@ void refuseExisting(const std::string& path)
 }
 
 /// The track of --robot, or of the only robot of the bag.
-RobotTrack pickTrack(const std::string& bag, const ToolOptions& options, Demonstration& demo)
+RobotTrack pickTrack(const std::string& bag, const Options& options, Demonstration& demo)
 {
   demo = readDemonstration(bag, options.has("robot") ? std::vector<std::string>{ options.text("robot") }
                                                      : std::vector<std::string>{});
@@ -62,25 +63,25 @@ RobotTrack pickTrack(const std::string& bag, const ToolOptions& options, Demonst
   return track;
 }
 
-int exportCommand(const ToolOptions& options)
+int exportCommand(const Options& options)
 {
-  if (options.positional.size() != 1 || !options.has("csv"))
+  if (options.positional().size() != 1 || !options.has("csv"))
     throw std::invalid_argument("usage: export BAG --csv FILE [--robot R] [--segment NAME]");
   refuseExisting(options.text("csv"));
   Demonstration demo;
-  const RobotTrack track = pickTrack(options.positional[0], options, demo);
+  const RobotTrack track = pickTrack(options.positional()[0], options, demo);
   exportCsv(track, options.text("csv"));
   std::cout << options.text("csv") << ": robot " << track.robot << ", " << track.states.size() << " states, "
             << track.joint_names.size() << " joints" << (track.gripper_joint.empty() ? "" : " + gripper") << "\n";
   return 0;
 }
 
-int importCommand(const ToolOptions& options)
+int importCommand(const Options& options)
 {
-  if (options.positional.size() != 1 || !options.has("bag") || !options.has("robot"))
+  if (options.positional().size() != 1 || !options.has("bag") || !options.has("robot"))
     throw std::invalid_argument("usage: import CSV --bag FILE --robot R [--gripper-joint J]");
   refuseExisting(options.text("bag"));
-  RobotTrack track = importCsv(options.positional[0], options.text("robot"));
+  RobotTrack track = importCsv(options.positional()[0], options.text("robot"));
   track.gripper_joint = options.text("gripper-joint", options.text("robot") + "_finger_joint");
   BagMetadata metadata;
   metadata.start_stamp = kImportStart;
@@ -89,12 +90,12 @@ int importCommand(const ToolOptions& options)
   return 0;
 }
 
-int segmentCommand(const ToolOptions& options)
+int segmentCommand(const Options& options)
 {
-  if (options.positional.size() != 1)
+  if (options.positional().size() != 1)
     throw std::invalid_argument("usage: segment BAG [--out FILE.yaml]");
-  const std::string bag = options.positional[0];
-  std::string out = options.text("out");
+  const std::string bag = options.positional()[0];
+  std::string out = options.text("out", "");
   if (out.empty())
     out = (bag.size() > 4 && bag.substr(bag.size() - 4) == ".bag" ? bag.substr(0, bag.size() - 4) : bag) +
           ".segments.yaml";
@@ -106,11 +107,11 @@ int segmentCommand(const ToolOptions& options)
   return 0;
 }
 
-int plotCommand(const ToolOptions& options)
+int plotCommand(const Options& options)
 {
-  if (options.positional.size() != 1 || !options.has("out"))
+  if (options.positional().size() != 1 || !options.has("out"))
     throw std::invalid_argument("usage: plot BAG --out FILE.png [--robot R]");
-  const std::string bag = options.positional[0], out = options.text("out");
+  const std::string bag = options.positional()[0], out = options.text("out");
   refuseExisting(out);
   Demonstration demo;
   const RobotTrack track = pickTrack(bag, options, demo);
@@ -143,7 +144,7 @@ int main(int argc, char** argv)
   {
     if (command == "replay")
       return runReplay(argc, argv);
-    const ToolOptions options(argc, argv, 2, { "csv", "robot", "segment", "bag", "gripper-joint", "out" });
+    const Options options(argc, argv, 2, { "csv", "robot", "segment", "bag", "gripper-joint", "out" });
     if (command == "export")
       return exportCommand(options);
     if (command == "import")

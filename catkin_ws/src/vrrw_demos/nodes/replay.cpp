@@ -12,6 +12,10 @@
 #include <ros/topic.h>
 #include <sensor_msgs/JointState.h>
 #include <std_srvs/Trigger.h>
+#include <vrrw_common/joint_mapping.h>
+#include <vrrw_common/options.h>
+#include <vrrw_common/ros/persistent_service.h>
+#include <vrrw_common/ros/workspace_check.h>
 #include <vrrw_control/trajectory_interpolator.h>
 #include <vrrw_demos/demo_error.h>
 #include <vrrw_demos/replay_path.h>
@@ -23,12 +27,12 @@
 
 #include "bag_demo.h"
 #include "segment_report.h"
-#include "tool_options.h"
 
 namespace vrrw_demos
 {
 namespace
 {
+using vrrw_common::Options;
 using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;
 using GripperClient = actionlib::SimpleActionClient<control_msgs::GripperCommandAction>;
 
@@ -82,9 +86,10 @@ void confirmIfReal(const std::string& ns, bool real, double seconds)
     return;
   const std::string service = ns + "arm_controller/confirm_real_execution";
   std_srvs::Trigger confirm;
+  static vrrw_common::PersistentServices services;
   for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); ros::WallTime::now() < end;
        ros::WallDuration(0.05).sleep())
-    if (ros::NodeHandle().serviceClient<std_srvs::Trigger>(service, true).call(confirm) && confirm.response.success)
+    if (services.tryCall(service, confirm) && confirm.response.success)
       return;
   std::cerr << "replay: " << service << ": not confirmed (" << confirm.response.message << ")\n";
 }
@@ -121,12 +126,10 @@ control_msgs::GripperCommandGoal gripperGoal(double position, const GripperRange
 
 int runReplay(int argc, char** argv)
 {
-  const ToolOptions options(argc, argv, 2, { "mode", "robot", "segment", "speed", "tolerance" }, { "yes" });
-  if (options.positional.size() != 1 || !options.has("mode"))
+  const Options options(argc, argv, 2, { "mode", "robot", "segment", "speed", "tolerance" }, { "yes" });
+  if (options.positional().size() != 1 || !options.has("mode"))
     throw std::invalid_argument("usage: replay BAG --mode fake|physics|real [--robot R] [--segment NAME] [--speed S]");
-  const std::string bag = options.positional[0], mode = options.text("mode");
-  if (mode != "fake" && mode != "physics" && mode != "real")
-    throw std::invalid_argument("--mode is fake, physics or real, not '" + mode + "'");
+  const std::string bag = options.positional()[0], mode = options.choice("mode", { "fake", "physics", "real" });
   const Demonstration demo = readDemonstration(bag, options.has("robot") ? std::vector<std::string>{ options.text("robot") }
                                                                          : std::vector<std::string>{});
   if (demo.robots.size() != 1)
@@ -148,10 +151,12 @@ int runReplay(int argc, char** argv)
         track.gripper_goals.push_back({ segment.start, segment.gripper_target });
 
   ros::init(argc, argv, "demo_replay", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+  const std::string ns = "/" + track.robot + "/";
+  vrrw_common::checkWorkspace(
+      { track.robot, { ns + "arm_controller/follow_joint_trajectory", ns + "gripper_controller/gripper_cmd" }, {} });
   ros::NodeHandle nh;
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  const std::string ns = "/" + track.robot + "/";
   const std::string running_mode = nh.param<std::string>(ns + "controller/mode", "");
   if (running_mode != mode)
     throw DemoError("replay: --mode " + mode + ", but " + ns + "controller runs in mode '" + running_mode +
@@ -191,10 +196,11 @@ int runReplay(int argc, char** argv)
   approach.joint_names = track.joint_names;
   approach.points.resize(2);
   double move_time = 0.5;
+  const auto measured_at = vrrw_common::findJoints(now->name, track.joint_names);
   for (std::size_t j = 0; j < track.joint_names.size(); ++j)
   {
-    const auto found = std::find(now->name.begin(), now->name.end(), track.joint_names[j]);
-    const double from = found == now->name.end() ? path.trajectory.points[0].positions[j] : now->position[static_cast<std::size_t>(found - now->name.begin())];
+    const double from = measured_at && (*measured_at)[j] < now->position.size() ? now->position[(*measured_at)[j]]
+                                                                                : path.trajectory.points[0].positions[j];
     approach.points[0].positions.push_back(from);
     approach.points[1].positions.push_back(path.trajectory.points[0].positions[j]);
     move_time = std::max(move_time, 5.0 * std::abs(path.trajectory.points[0].positions[j] - from) / replay.max_velocity[j]);
@@ -212,7 +218,8 @@ int runReplay(int argc, char** argv)
   if (mode == "physics" && !options.has("segment"))
   {
     std_srvs::Trigger reset;
-    if (!ros::service::call("/physics/reset", reset) || !reset.response.success)
+    vrrw_common::PersistentServices().call("/physics/reset", reset);
+    if (!reset.response.success)
       throw DemoError("replay: /physics/reset failed: " + reset.response.message);
     ros::Duration(0.5).sleep();
     std::cout << "replay: physics reset to the scene's start\n";
@@ -260,13 +267,15 @@ int runReplay(int argc, char** argv)
     const double t = (state.header.stamp - start).toSec();
     if (t < 0 || t > duration)
       continue;
+    const auto at = vrrw_common::findJoints(state.name, track.joint_names);
+    if (!at)
+      continue;
     const auto expected = sent.sample(t);
     for (std::size_t j = 0; j < track.joint_names.size(); ++j)
     {
-      const auto found = std::find(state.name.begin(), state.name.end(), track.joint_names[j]);
-      if (found == state.name.end())
+      if ((*at)[j] >= state.position.size())
         continue;
-      const double e = state.position[static_cast<std::size_t>(found - state.name.begin())] - expected.positions[j];
+      const double e = state.position[(*at)[j]] - expected.positions[j];
       max_error = std::max(max_error, std::abs(e));
       sum += e * e;
       ++count;

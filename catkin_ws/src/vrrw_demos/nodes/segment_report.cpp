@@ -4,6 +4,7 @@
 #include <memory>
 #include <sstream>
 
+#include <vrrw_common/joint_mapping.h>
 #include <vrrw_demos/demo_error.h>
 #include <vrrw_kinematics/kinematic_chain.h>
 #include <vrrw_kinematics/kinematics_error.h>
@@ -28,16 +29,13 @@ public:
       const auto model = vrrw_kinematics::RobotModel::fromUrdf(metadata.robot_description);
       chain_ = std::make_unique<vrrw_kinematics::KinematicChain>(model, model.links().front().name,
                                                                  robot->second.tcp_link);
-      for (const std::string& joint : chain_->jointNames())
+      const auto chain_in_track = vrrw_common::findJoints(track.joint_names, chain_->jointNames());
+      if (!chain_in_track)
       {
-        const auto found = std::find(track.joint_names.begin(), track.joint_names.end(), joint);
-        if (found == track.joint_names.end())
-        {
-          chain_.reset();
-          return;
-        }
-        index_.push_back(static_cast<std::size_t>(found - track.joint_names.begin()));
+        chain_.reset();
+        return;
       }
+      index_ = *chain_in_track;
     }
     catch (const vrrw_kinematics::KinematicsError&)
     {

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <ros/ros.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/JointState.h>
@@ -61,7 +62,7 @@ vrrw_msgs::DemoStart::Response start(const std::string& file)
 {
   vrrw_msgs::DemoStart srv;
   srv.request.file = file;
-  EXPECT_TRUE(ros::service::call("/demos/start", srv));
+  EXPECT_TRUE(vrrw_common::services().tryCall("/demos/start", srv));
   return srv.response;
 }
 
@@ -150,14 +151,14 @@ TEST(Recorder, KeepsEveryMessageOfFourRobotsAt1kHz)
   ASSERT_TRUE(publishers.connected());
   vrrw_msgs::DemoAnnotate note;
   note.request.text = "start of the lossless run";
-  ASSERT_TRUE(ros::service::call("/demos/annotate", note));
+  ASSERT_TRUE(vrrw_common::services().tryCall("/demos/annotate", note));
   EXPECT_TRUE(note.response.success);
   const ros::WallTime begin = ros::WallTime::now();
   publishers.publish(10000, 1000.0);
   const double seconds = (ros::WallTime::now() - begin).toSec();
   ros::Duration(0.5).sleep();
   vrrw_msgs::DemoStop stop;
-  ASSERT_TRUE(ros::service::call("/demos/stop", stop));
+  ASSERT_TRUE(vrrw_common::services().tryCall("/demos/stop", stop));
   EXPECT_TRUE(stop.response.success) << stop.response.message;
   EXPECT_EQ(stop.response.file, file);
   const auto counts = countPerTopic(file);
@@ -204,7 +205,7 @@ TEST(Recorder, DiskFullStopsKeepsWhatWasWrittenAndSaysSo)
   ASSERT_TRUE(publishers.connected());
   publishers.publish(1500, 1000.0);  // about 1.2 MB: more than the limit
   vrrw_msgs::DemoStop stop;
-  ASSERT_TRUE(ros::service::call("/demos/stop", stop));  // the process is alive and answers
+  ASSERT_TRUE(vrrw_common::services().tryCall("/demos/stop", stop));  // the process is alive and answers
   EXPECT_FALSE(stop.response.success);
   EXPECT_NE(stop.response.message.find("disk full?): recording stopped"), std::string::npos) << stop.response.message;
   EXPECT_EQ(stop.response.file, file + ".active");

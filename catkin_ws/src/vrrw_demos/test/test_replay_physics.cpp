@@ -15,11 +15,13 @@
 #include <control_msgs/GripperCommandAction.h>
 #include <Eigen/Geometry>
 #include <ros/ros.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include <ros/topic.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/JointState.h>
 #include <tf2_msgs/TFMessage.h>
+#include <vrrw_common/joint_mapping.h>
 #include <vrrw_msgs/DemoStart.h>
 #include <vrrw_msgs/DemoStop.h>
 
@@ -89,9 +91,7 @@ control_msgs::FollowJointTrajectoryGoal carry(const sensor_msgs::JointState& now
   control_msgs::FollowJointTrajectoryGoal goal;
   const std::vector<std::string> names{ "ur5e_shoulder_pan_joint", "ur5e_shoulder_lift_joint", "ur5e_elbow_joint",
                                         "ur5e_wrist_1_joint",      "ur5e_wrist_2_joint",       "ur5e_wrist_3_joint" };
-  std::vector<double> q;
-  for (const auto& name : names)
-    q.push_back(now.position[static_cast<std::size_t>(std::find(now.name.begin(), now.name.end(), name) - now.name.begin())]);
+  const std::vector<double> q = vrrw_common::inRobotOrder(now.position, vrrw_common::jointMapping(now.name, names));
   goal.trajectory.joint_names = names;
   auto add = [&](double t, double pan, double lift) {
     trajectory_msgs::JointTrajectoryPoint p;
@@ -147,7 +147,7 @@ TEST(ReplayPhysics, PickAndPlaceEndsWhereTheDemonstrationLeftTheBlock)
   const std::string bag = std::string(::mkdtemp(folder)) + "/carry.bag";
   vrrw_msgs::DemoStart start;
   start.request.file = bag;
-  ASSERT_TRUE(ros::service::call("/demos/start", start) && start.response.success) << start.response.message;
+  ASSERT_TRUE(vrrw_common::services().tryCall("/demos/start", start) && start.response.success) << start.response.message;
   ros::Duration(0.5).sleep();
   ASSERT_TRUE(gripper(hand, 0.8));  // stalls on the block
   auto now = ros::topic::waitForMessage<sensor_msgs::JointState>("/ur5e/joint_states", ros::Duration(5.0));
@@ -159,7 +159,7 @@ TEST(ReplayPhysics, PickAndPlaceEndsWhereTheDemonstrationLeftTheBlock)
   ASSERT_TRUE(arm.waitForResult(ros::Duration(20.0)));
   ros::Duration(0.5).sleep();
   vrrw_msgs::DemoStop stop;
-  ASSERT_TRUE(ros::service::call("/demos/stop", stop) && stop.response.success) << stop.response.message;
+  ASSERT_TRUE(vrrw_common::services().tryCall("/demos/stop", stop) && stop.response.success) << stop.response.message;
 
   const Eigen::Isometry3d demonstrated = lastBlockPoseIn(bag);
   const double carried = (demonstrated.translation() - start_pose.translation()).norm();

@@ -8,7 +8,7 @@
 
 #include <vrrw_dmp/dmp.h>
 
-#include "options.h"
+#include <vrrw_common/options.h>
 
 namespace
 {
@@ -62,14 +62,14 @@ int main(int argc, char** argv)
 {
   try
   {
-    const vrrw_dmp::Options options(argc, argv, 1, { "samples", "dofs", "basis", "steps", "repetitions" });
-    const std::size_t samples = options.count("samples", 1000);
-    const std::size_t dofs = options.count("dofs", 6);
-    const std::size_t basis = options.count("basis", 50);
-    const std::size_t steps = options.count("steps", 1000);
-    const std::size_t repetitions = options.count("repetitions", 301);
+    const vrrw_common::Options options(argc, argv, 1, { "samples", "dofs", "basis", "steps", "repetitions" });
+    const std::size_t samples = options.count("samples", 1000, 0, 1000000000);
+    const std::size_t dofs = options.count("dofs", 6, 0, 1000000000);
+    const std::size_t basis = options.count("basis", 50, 0, 1000000000);
+    const std::size_t steps = options.count("steps", 1000, 0, 1000000000);
+    const std::size_t repetitions = options.count("repetitions", 301, 0, 1000000000);
     if (samples < 3 || dofs == 0 || basis == 0 || steps == 0 || repetitions == 0)
-      throw vrrw_dmp::OptionError("need --samples >= 3, --dofs, --basis, --steps, --repetitions >= 1");
+      throw vrrw_common::OptionError("need --samples >= 3, --dofs, --basis, --steps, --repetitions >= 1");
 
     const auto demo = syntheticDemo(samples, dofs);
     vrrw_dmp::DmpParameters parameters;

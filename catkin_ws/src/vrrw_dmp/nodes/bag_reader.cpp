@@ -1,11 +1,11 @@
 #include "bag_reader.h"
 
-#include <algorithm>
 #include <stdexcept>
 
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/JointState.h>
+#include <vrrw_common/joint_mapping.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
 namespace vrrw_dmp
@@ -19,12 +19,11 @@ void appendJointState(const sensor_msgs::JointState& state, double time, std::ve
     names = state.name;
   vrrw_trajectory::TrajectoryPoint point;
   point.time = time;
-  for (const auto& name : names)
+  const auto at = vrrw_common::findJoints(state.name, names);
+  if (!at)
+    return;  // a message of another publisher (e.g. a gripper) without these joints
+  for (const std::size_t index : *at)
   {
-    const auto found = std::find(state.name.begin(), state.name.end(), name);
-    if (found == state.name.end())
-      return;  // a message of another publisher (e.g. a gripper) without this joint
-    const auto index = static_cast<std::size_t>(found - state.name.begin());
     if (index >= state.position.size())
       return;
     point.positions.push_back(state.position[index]);

@@ -8,17 +8,18 @@
 #include <iostream>
 #include <sstream>
 
+#include <vrrw_common/joint_mapping.h>
+#include <vrrw_common/options.h>
 #include <vrrw_dmp/dmp.h>
 #include <vrrw_dmp/dmp_error.h>
 #include <vrrw_dmp/dmp_yaml.h>
 #include <vrrw_trajectory/csv.h>
 
-#include "options.h"
 
 namespace
 {
-using vrrw_dmp::Options;
-using vrrw_dmp::OptionError;
+using vrrw_common::OptionError;
+using vrrw_common::Options;
 
 const char* const kUsage =
     "usage: vrrw_dmp learn --demo FILE.csv --out MODEL.yaml [--basis N] [--alpha A] [--K K] [--D D]\n"
@@ -55,10 +56,11 @@ double reproductionRmse(const vrrw_dmp::Dmp& dmp, const vrrw_trajectory::JointTr
 int learn(int argc, char** argv)
 {
   const Options options(argc, argv, 2, { "demo", "out", "basis", "alpha", "K", "D", "scaling" });
+  options.expectPositional({});
   const std::string demo_path = options.text("demo");
   const std::string out = options.text("out");
   vrrw_dmp::DmpParameters parameters;
-  parameters.basis_count = options.count("basis", parameters.basis_count);
+  parameters.basis_count = options.count("basis", parameters.basis_count, 0, 1000000000);
   parameters.alpha = options.number("alpha", parameters.alpha);
   parameters.K = options.number("K", parameters.K);
   if (options.has("D"))
@@ -82,11 +84,12 @@ int learn(int argc, char** argv)
 int rollout(int argc, char** argv)
 {
   const Options options(argc, argv, 2, { "model", "out", "start", "goal", "tau", "dt" });
+  options.expectPositional({});
   const auto dmp = vrrw_dmp::loadDmp(options.text("model"));
   const std::string out = options.text("out");
   vrrw_dmp::RolloutRequest request;
-  request.start = options.numbers("start");
-  request.goal = options.numbers("goal");
+  request.start = options.list("start");
+  request.goal = options.list("goal");
   request.tau = options.number("tau", 0.0);
   if (options.has("tau") && !(request.tau > 0.0))
     throw OptionError("--tau: must be > 0");
@@ -119,12 +122,13 @@ void appendSeries(std::ostringstream& json, const std::string& label, const vrrw
                   const std::vector<std::string>& joints, const std::string& path)
 {
   std::vector<std::size_t> column;
-  for (const auto& name : joints)
+  try
   {
-    const auto found = std::find(data.joint_names.begin(), data.joint_names.end(), name);
-    if (found == data.joint_names.end())
-      throw vrrw_trajectory::TrajectoryError(path + ": has no joint '" + name + "' (the demonstration has it)");
-    column.push_back(static_cast<std::size_t>(found - data.joint_names.begin()));
+    column = vrrw_common::jointMapping(data.joint_names, joints);
+  }
+  catch (const vrrw_common::JointMappingError& e)
+  {
+    throw vrrw_trajectory::TrajectoryError(path + ": " + e.what() + " (the demonstration has them)");
   }
   json << "{\"label\":" << jsonString(label) << ",\"t\":[";
   for (std::size_t k = 0; k < data.points.size(); ++k)
@@ -168,6 +172,7 @@ int runPlotScript(const std::string& json)
 int plot(int argc, char** argv)
 {
   const Options options(argc, argv, 2, { "demo", "rollout", "out", "title" });
+  options.expectPositional({});
   const std::string demo_path = options.text("demo");
   const std::string out = options.text("out");
   const auto rollouts = options.all("rollout");

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include <ros/ros.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include <rosbag/bag.h>
 #include <sensor_msgs/JointState.h>
 
@@ -80,7 +81,7 @@ protected:
   {
     vrrw_dmp::Learn service;
     service.request = request;
-    EXPECT_TRUE(ros::service::call("/dmp_node/learn", service));
+    EXPECT_TRUE(vrrw_common::services().tryCall("/dmp_node/learn", service));
     return service.response;
   }
 
@@ -88,7 +89,7 @@ protected:
   {
     vrrw_dmp::Plan service;
     service.request = request;
-    EXPECT_TRUE(ros::service::call("/dmp_node/plan", service));
+    EXPECT_TRUE(vrrw_common::services().tryCall("/dmp_node/plan", service));
     return service.response;
   }
 };

@@ -14,6 +14,9 @@
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
 #include <std_srvs/Trigger.h>
+#include <vrrw_common/joint_mapping.h>
+#include <vrrw_common/options.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include <vrrw_evaluation/demo_cell.h>
 #include <vrrw_evaluation/demo_report.h>
 #include <vrrw_evaluation/pick_place_task.h>
@@ -21,7 +24,6 @@
 #include <vrrw_trajectory/msg_conversions.h>
 
 #include "../src/ros/bag_instructions.h"
-#include "../src/ros/service_links.h"
 
 using namespace vrrw_evaluation;
 
@@ -81,15 +83,7 @@ public:
     const auto state = ros::topic::waitForMessage<sensor_msgs::JointState>(ns_ + "joint_states", ros::Duration(5.0));
     if (!state)
       return std::nullopt;
-    std::vector<double> q;
-    for (const std::string& joint : joints)
-    {
-      const auto found = std::find(state->name.begin(), state->name.end(), joint);
-      if (found == state->name.end() || std::size_t(found - state->name.begin()) >= state->position.size())
-        return std::nullopt;
-      q.push_back(state->position[std::size_t(found - state->name.begin())]);
-    }
-    return q;
+    return vrrw_common::findValues(state->name, state->position, joints);
   }
 
   /// Waits until the measured arm is within `tolerance` of `q` (the controller's gate checks the start of a
@@ -145,7 +139,7 @@ private:
          ros::WallDuration(0.05).sleep())
     {
       std_srvs::Trigger confirm;
-      if (!links_.call(ns_ + "arm_controller/confirm_real_execution", confirm))
+      if (!links_.tryCall(ns_ + "arm_controller/confirm_real_execution", confirm))
         confirm.response.message = "confirm_real_execution did not answer";
       if (confirm.response.success)
         return true;
@@ -159,7 +153,7 @@ private:
   std::string ns_, confirm_message_;
   ArmClient arm_;
   GripperClient gripper_;
-  ServiceLinks links_;
+  vrrw_common::PersistentServices links_;
 };
 
 /// From `from` to `to` at a fifth of the velocity limits, at rest at both ends (as vrrw_demos' replay starts).
@@ -268,23 +262,14 @@ int run(const std::string& scene, const std::string& bag, const std::string& out
 int main(int argc, char** argv)
 {
   ros::init(argc, argv, "demo_relay", ros::init_options::AnonymousName);
-  std::string scene, bag, out = "relay.json";
-  bool yes = false;
-  for (int i = 1; i < argc; ++i)
+  try
   {
-    const std::string flag = argv[i];
-    if (flag == "--yes")
-      yes = true;
-    else if (flag == "--scene" && i + 1 < argc)
-      scene = argv[++i];
-    else if (flag == "--bag" && i + 1 < argc)
-      bag = argv[++i];
-    else if (flag == "--out" && i + 1 < argc)
-      out = argv[++i];
-    else
-      return std::cerr << "usage: demo_relay --scene S --bag BAG [--out relay.json] [--yes]\n", 2;
+    const vrrw_common::Options options(argc, argv, 1, { "scene", "bag", "out" }, { "yes" });
+    options.expectPositional({});
+    return run(options.text("scene"), options.text("bag"), options.text("out", "relay.json"), options.flag("yes"));
   }
-  if (scene.empty() || bag.empty())
-    return std::cerr << "usage: demo_relay --scene S --bag BAG [--out relay.json] [--yes]\n", 2;
-  return run(scene, bag, out, yes);
+  catch (const vrrw_common::OptionError& e)
+  {
+    return std::cerr << "demo_relay: " << e.what() << " (usage: demo_relay --scene S --bag BAG [--out relay.json] [--yes])\n", 2;
+  }
 }

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <ros/ros.h>
+#include <vrrw_common/options.h>
 #include <vrrw_evaluation/demo_cell.h>
 
 #include "../src/ros/pick_place_demo.h"
@@ -14,32 +15,18 @@ using namespace vrrw_evaluation;
 
 namespace
 {
-bool parse(int argc, char** argv, std::string& scene, DemoOptions& options, bool& check)
+/// The command line into \a scene, \a options and \a check; throws vrrw_common::OptionError naming the option.
+void parse(int argc, char** argv, std::string& scene, DemoOptions& options, bool& check)
 {
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string flag = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (flag == "--check")
-      check = true;
-    else if (flag == "--scene" && has_value)
-      scene = argv[++i];
-    else if (flag == "--trials" && has_value)
-      options.trials = std::atoi(argv[++i]);
-    else if (flag == "--seed" && has_value)
-      options.seed = std::strtoull(argv[++i], nullptr, 10);
-    else if (flag == "--out" && has_value)
-      options.out = argv[++i];
-    else if (flag == "--shown" && has_value)
-      options.shown_trials = std::atoi(argv[++i]);
-    else if (flag == "--capture" && has_value)
-      options.capture_command = argv[++i];
-    else
-      return std::cerr << "demo_runner: unknown or incomplete option '" << flag << "'\n", false;
-  }
-  if (options.trials < 0 || options.trials > 1000)
-    return std::cerr << "demo_runner: --trials: " << options.trials << " outside [0, 1000]\n", false;
-  return !scene.empty() || (std::cerr << "demo_runner: --scene is required\n", false);
+  const vrrw_common::Options o(argc, argv, 1, { "scene", "trials", "seed", "out", "shown", "capture" }, { "check" });
+  o.expectPositional({});
+  scene = o.text("scene");
+  options.trials = static_cast<int>(o.count("trials", static_cast<std::uint64_t>(options.trials), 0, 1000));
+  options.seed = o.count("seed", options.seed, 0, UINT64_MAX);
+  options.out = o.text("out", options.out);
+  options.shown_trials = static_cast<int>(o.count("shown", static_cast<std::uint64_t>(options.shown_trials), 0, 1000));
+  options.capture_command = o.text("capture", options.capture_command);
+  check = o.flag("check");
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start)
@@ -54,8 +41,14 @@ int main(int argc, char** argv)
   std::string scene;
   DemoOptions options;
   bool check = false;
-  if (!parse(argc, argv, scene, options, check))
-    return 2;
+  try
+  {
+    parse(argc, argv, scene, options, check);
+  }
+  catch (const vrrw_common::OptionError& e)
+  {
+    return std::cerr << "demo_runner: " << e.what() << "\n", 2;
+  }
   Cell cell;
   std::string error;
   if (!findCell(scene, cell, error))

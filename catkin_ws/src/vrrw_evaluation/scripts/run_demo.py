@@ -121,18 +121,27 @@ def demo_config(path):
         yaml.safe_dump(config, f)
 
 
-def main():
+def parse_args(argv):
+    """The command line; args.trials as given, else 3 with --quick and 20 without (an explicit option beats
+    the preset)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument('--launch', required=True)
     parser.add_argument('--scene', default='pick_place_drill')
-    parser.add_argument('--trials', type=int, default=20)
+    parser.add_argument('--trials', type=int, help='DMP trials (default 20; 3 with --quick)')
     parser.add_argument('--seed', type=int, default=1)
     parser.add_argument('--out', default='demo_report')
-    parser.add_argument('--quick', action='store_true', help='3 trials')
+    parser.add_argument('--quick', action='store_true', help='3 trials unless --trials says otherwise')
     parser.add_argument('--real', metavar='NS', help="relay to the real robot whose driver runs under NS")
     parser.add_argument('--yes', action='store_true', help='--real without asking')
-    args = parser.parse_args()
-    trials = 3 if args.quick else args.trials
+    args = parser.parse_args(argv)
+    if args.trials is None:
+        args.trials = 3 if args.quick else 20
+    return args
+
+
+def main():
+    args = parse_args(sys.argv[1:])
+    trials = args.trials
     robot_master = os.environ.get('ROS_MASTER_URI', '')
     if args.real is not None:
         check_driver(robot_master, args.real)

@@ -13,6 +13,7 @@
 #include <unistd.h>
 #include <sensor_msgs/JointState.h>
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
+#include <vrrw_common/options.h>
 #include <vrrw_msgs/GhostPreset.h>
 
 #include "hand_drag.h"
@@ -57,7 +58,7 @@ std::vector<double> markerLatency(ros::NodeHandle& nh, tf2_ros::Buffer& tf, int 
 {
   vrrw_msgs::GhostPreset preset;
   preset.request.name = "square_center";
-  ros::service::call("/ur5e/ghost/preset", preset);
+  vrrw_common::services().tryCall("/ur5e/ghost/preset", preset);
   ros::WallDuration(0.5).sleep();
   const Eigen::Isometry3d tcp = tf2::transformToEigen(tf.lookupTransform("world", "ghost/ur5e_tcp", ros::Time(0), ros::Duration(5.0)));
   std::mutex mutex;
@@ -109,18 +110,21 @@ int main(int argc, char** argv)
   int samples = 1000;
   double hold = 5.0;
   std::string angular_stiffness = "500", angular_damping = "5";  // the node's defaults
-  for (int i = 1; i + 1 < argc; i += 2)
+  try
   {
-    const std::string flag = argv[i];
-    if (flag == "--samples")
-      samples = std::atoi(argv[i + 1]);
-    else if (flag == "--hold")
-      hold = std::atof(argv[i + 1]);
-    else if (flag == "--angular")  // K,D of a grip on a link (0,0: position only, as before issue 13)
-      angular_stiffness = std::string(argv[i + 1]).substr(0, std::string(argv[i + 1]).find(',')),
-      angular_damping = std::string(argv[i + 1]).substr(std::string(argv[i + 1]).find(',') + 1);
-    else
-      return std::cerr << "bench interaction: unknown option " << flag << " (--samples N, --hold S, --angular K,D)\n", 2;
+    const vrrw_common::Options options(argc, argv, 1, { "samples", "hold", "angular" });
+    options.expectPositional({});
+    samples = static_cast<int>(options.count("samples", 1000, 1, 1000000));
+    hold = options.number("hold", hold, vrrw_common::Range::closed(0.0, 3600.0, "s"));
+    if (options.has("angular"))  // K,D of a grip on a link (0,0: position only, as before issue 13)
+    {
+      const auto gains = options.list("angular", 2, vrrw_common::Range::closed(0.0, 1e9));
+      angular_stiffness = std::to_string(gains[0]), angular_damping = std::to_string(gains[1]);
+    }
+  }
+  catch (const vrrw_common::OptionError& e)
+  {
+    return std::cerr << "bench interaction: " << e.what() << " (--samples N, --hold S, --angular K,D)\n", 2;
   }
   const int port = freePort();
   const std::string master = "http://127.0.0.1:" + std::to_string(port);

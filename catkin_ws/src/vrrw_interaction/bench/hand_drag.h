@@ -5,6 +5,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <mutex>
 #include <ros/ros.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include <sstream>
 #include <std_msgs/Float64.h>
 #include <std_srvs/SetBool.h>
@@ -44,7 +45,7 @@ inline DragFigures dragWrist(ros::NodeHandle& nh, tf2_ros::Buffer& tf, double di
     std_srvs::SetBool srv;
     srv.request.data = on;
     return ros::service::waitForService("/ur5e/free_drive", ros::Duration(30.0)) &&
-           ros::service::call("/ur5e/free_drive", srv) && srv.response.success;
+           vrrw_common::services().tryCall("/ur5e/free_drive", srv) && srv.response.success;
   };
   const auto linkPose = [&](const std::string& link) {
     return tf2::transformToEigen(tf.lookupTransform("world", link, ros::Time(0), ros::Duration(2.0)));

@@ -3,6 +3,7 @@
 #include <std_msgs/Bool.h>
 #include <tf2_eigen/tf2_eigen.h>
 #include <trajectory_msgs/JointTrajectory.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include <visualization_msgs/MarkerArray.h>
 #include <vrrw_physics/Hand.h>
 #include <vrrw_physics/SetMode.h>
@@ -18,6 +19,14 @@ std::string describe(const Eigen::Vector3d& p)
   char buffer[96];
   std::snprintf(buffer, sizeof(buffer), "(%.3f, %.3f, %.3f)", p.x(), p.y(), p.z());
   return buffer;
+}
+
+/// The physics node's services over persistent links (ros_comm#1976). A short wait for a missing service: the
+/// callers hold the world lock. Never destroyed: its links must not be shut down after roscpp at exit.
+vrrw_common::PersistentServices& physicsServices()
+{
+  static auto* services = new vrrw_common::PersistentServices({ 0.2, 5.0 });
+  return *services;
 }
 }  // namespace
 
@@ -86,9 +95,7 @@ std::string FreeDrive::set(const std::string& robot, bool on)
     vrrw_physics::SetMode srv;
     srv.request.robot = robot;
     srv.request.mode = on ? "compliant" : "rigid";
-    // persistent: the server keeps the connection, so its answer cannot be lost (roscpp 1.15, ros_comm#1976)
-    if (!ros::NodeHandle().serviceClient<vrrw_physics::SetMode>("/physics/set_mode", true).call(srv) ||
-        !srv.response.success)
+    if (!physicsServices().tryCall("/physics/set_mode", srv) || !srv.response.success)
       return "/physics/set_mode " + srv.request.mode + " failed: " +
              (srv.response.message.empty() ? "is the physics node running?" : srv.response.message);
   }
@@ -357,8 +364,7 @@ bool FreeDrive::spring(const std::string& id, const std::string& body, const Eig
   if (angular)  // see the README: the wrist holds its orientation within 2 deg over the drag benchmark
     srv.request.angular_stiffness = angular_stiffness_, srv.request.angular_damping = angular_damping_;
   srv.request.release = release;
-  if (ros::NodeHandle().serviceClient<vrrw_physics::SetSpring>("/physics/set_spring", true).call(srv) &&
-      srv.response.success)  // persistent, as set_mode above
+  if (physicsServices().tryCall("/physics/set_spring", srv) && srv.response.success)
     return true;
   ROS_WARN_STREAM("/physics/set_spring " << id << " on " << body << ": "
                                          << (srv.response.message.empty() ? "no physics node" : srv.response.message));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <vrrw_common/joint_mapping.h>
 
 namespace vrrw_interaction
 {
@@ -99,13 +100,18 @@ Outcome GhostRobot::setJoints(const std::vector<std::string>& names, const std::
     if (names.size() != positions.size())
       return { false, "name/position: " + std::to_string(names.size()) + " names but " +
                           std::to_string(positions.size()) + " positions" };
-    for (std::size_t i = 0; i < names.size(); ++i)
+    std::vector<std::size_t> at;
+    try
     {
-      const auto joint = std::find(joints.begin(), joints.end(), names[i]);
-      if (joint == joints.end())
-        return { false, "name[" + std::to_string(i) + "]: '" + names[i] + "' is not an arm joint of " + arm_.robot().name };
-      q[joint - joints.begin()] = positions[i];
+      at = vrrw_common::robotIndices(names, joints);
     }
+    catch (const vrrw_common::JointMappingError& e)
+    {
+      return { false, "name: '" + e.joint() + "' " +
+                          (e.reason() == "named twice" ? e.reason() : "is not an arm joint of " + arm_.robot().name) };
+    }
+    for (std::size_t i = 0; i < at.size(); ++i)
+      q[static_cast<Eigen::Index>(at[i])] = positions[i];
   }
   for (Eigen::Index i = 0; i < q.size(); ++i)
     if (!std::isfinite(q[i]))

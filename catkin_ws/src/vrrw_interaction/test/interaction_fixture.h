@@ -4,6 +4,7 @@
 #include <mutex>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include <vrrw_kinematics/arm.h>
 #include <vrrw_kinematics/scene_state.h>
 #include <vrrw_msgs/Event.h>
@@ -82,8 +83,8 @@ template <class Service>
 Service call(const std::string& name, Service srv = Service())
 {
   EXPECT_TRUE(ros::service::waitForService(name, ros::Duration(20.0))) << name;
-  // persistent: the server never closes it, so its answer cannot be lost (ros_comm#1976)
-  EXPECT_TRUE(ros::NodeHandle().serviceClient<Service>(name, true).call(srv)) << name;
+  std::string error;
+  EXPECT_TRUE(vrrw_common::services().tryCall(name, srv, &error)) << error;
   return srv;
 }
 }  // namespace vrrw_interaction_test

@@ -7,19 +7,20 @@
 #include <sstream>
 #include <vrrw_scene/scene_loader.h>
 
-#include "bench_args.h"
+#include <vrrw_common/options.h>
+
+#include "bench_support.h"
 #include "vrrw_kinematics/scene_state.h"
 #include "vrrw_kinematics/state_checker.h"
 
-using vrrw_kinematics::BenchArgs;
 
 int main(int argc, char** argv)
 {
   try
   {
-    const BenchArgs args(argc, argv);
-    const long samples = args.integer("samples", 200000);
-    const vrrw_scene::Scene scene = vrrw_scene::loadScene(args.required("scene"));
+    const vrrw_common::Options args(argc, argv, 1, { "samples", "scene", "robot", "seed" }, {});
+    const long samples = static_cast<long>(args.count("samples", 200000, 1, 100000000));
+    const vrrw_scene::Scene scene = vrrw_scene::loadScene(args.text("scene"));
     vrrw_kinematics::CollisionWorld world = vrrw_kinematics::CollisionWorld::fromScene(scene);
     const auto acm_start = std::chrono::steady_clock::now();
     const bool cached = world.loadOrComputeAllowedCollisions(scene.cache_dir);
@@ -32,7 +33,7 @@ int main(int argc, char** argv)
       if (args.has("robot") && args.text("robot") != robot.name)
         continue;
       vrrw_kinematics::StateChecker checker(world, robot.arm_joints, initial);
-      std::mt19937_64 rng(static_cast<std::uint64_t>(args.integer("seed", 1)));
+      std::mt19937_64 rng(static_cast<std::uint64_t>(args.count("seed", 1, 0, vrrw_common::Options::kMaxCount)));
       std::vector<Eigen::VectorXd> states;
       for (long s = 0; s < std::min(samples, 20000L); ++s)
       {

@@ -13,7 +13,9 @@
 #include <vrrw_kinematics/scene_state.h>
 #include <vrrw_scene/scene_loader.h>
 
-#include "bench_args.h"
+#include <vrrw_common/options.h>
+
+#include "bench_support.h"
 
 using namespace vrrw_kinematics;
 
@@ -38,8 +40,8 @@ int main(int argc, char** argv)
 {
   try
   {
-    const BenchArgs args(argc, argv, { "moving-others" });
-    const vrrw_scene::Scene scene = vrrw_scene::loadScene(args.required("scene"));
+    const vrrw_common::Options args(argc, argv, 1, { "scene", "robot", "seed", "steps" }, { "moving-others" });
+    const vrrw_scene::Scene scene = vrrw_scene::loadScene(args.text("scene"));
     CollisionWorld world = CollisionWorld::fromScene(scene);
     world.loadOrComputeAllowedCollisions(scene.cache_dir);
     const vrrw_scene::Robot* robot = scene.robot(args.text("robot", scene.robots.front().name));
@@ -50,12 +52,12 @@ int main(int argc, char** argv)
       arms.emplace_back(world, r);
     Arm& dragged = arms[static_cast<std::size_t>(robot - scene.robots.data())];
     const Eigen::VectorXd initial = initialState(world.model(), scene);
-    std::mt19937_64 rng(static_cast<std::uint64_t>(args.integer("seed", 1)));
+    std::mt19937_64 rng(static_cast<std::uint64_t>(args.count("seed", 1, 0, vrrw_common::Options::kMaxCount)));
     std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI);
     std::vector<Eigen::VectorXd> phases;
     for (const Arm& arm : arms)
       phases.push_back(Eigen::VectorXd::NullaryExpr(static_cast<Eigen::Index>(arm.size()), [&] { return angle(rng); }));
-    const long steps = args.integer("steps", 3000);
+    const long steps = static_cast<long>(args.count("steps", 3000, 1, 100000000));
     IkOptions options;
     options.max_jump = 0.5;
     const std::size_t index = static_cast<std::size_t>(&dragged - arms.data());

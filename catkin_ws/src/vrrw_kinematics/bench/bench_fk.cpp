@@ -6,10 +6,11 @@
 #include <random>
 #include <sstream>
 
-#include "bench_args.h"
+#include <vrrw_common/options.h>
+
+#include "bench_support.h"
 #include "vrrw_kinematics/kinematic_chain.h"
 
-using vrrw_kinematics::BenchArgs;
 
 namespace
 {
@@ -31,9 +32,9 @@ int main(int argc, char** argv)
 {
   try
   {
-    const BenchArgs args(argc, argv);
-    const std::string urdf = vrrw_kinematics::readFile(args.required("urdf"));
-    const auto chain = vrrw_kinematics::KinematicChain::fromUrdf(urdf, args.required("base"), args.required("tip"));
+    const vrrw_common::Options args(argc, argv, 1, { "urdf", "base", "tip", "q", "samples", "seed" }, {});
+    const std::string urdf = vrrw_kinematics::readFile(args.text("urdf"));
+    const auto chain = vrrw_kinematics::KinematicChain::fromUrdf(urdf, args.text("base"), args.text("tip"));
     if (args.has("q"))
     {
       const Eigen::Isometry3d pose = chain.fk(parseJoints(args.text("q"), chain.size()));
@@ -43,8 +44,8 @@ int main(int argc, char** argv)
                   quaternion.w());
       return 0;
     }
-    const long samples = args.integer("samples", 100000);
-    std::mt19937_64 rng(static_cast<std::uint64_t>(args.integer("seed", 1)));
+    const long samples = static_cast<long>(args.count("samples", 100000, 1, 100000000));
+    std::mt19937_64 rng(static_cast<std::uint64_t>(args.count("seed", 1, 0, vrrw_common::Options::kMaxCount)));
     std::vector<Eigen::VectorXd> states;
     for (long s = 0; s < samples; ++s)
       states.push_back(chain.randomState(rng));

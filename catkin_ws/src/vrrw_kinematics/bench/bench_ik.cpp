@@ -5,25 +5,26 @@
 #include <iostream>
 #include <random>
 
-#include "bench_args.h"
+#include <vrrw_common/options.h>
+
+#include "bench_support.h"
 #include "vrrw_kinematics/ik_solver.h"
 
-using vrrw_kinematics::BenchArgs;
 
 int main(int argc, char** argv)
 {
   try
   {
-    const BenchArgs args(argc, argv, { "numeric" });
-    const std::string urdf = vrrw_kinematics::readFile(args.required("urdf"));
-    const auto chain = vrrw_kinematics::KinematicChain::fromUrdf(urdf, args.required("base"), args.required("tip"));
+    const vrrw_common::Options args(argc, argv, 1, { "urdf", "base", "tip", "tolerance", "timeout-ms", "samples", "seed" }, { "numeric" });
+    const std::string urdf = vrrw_kinematics::readFile(args.text("urdf"));
+    const auto chain = vrrw_kinematics::KinematicChain::fromUrdf(urdf, args.text("base"), args.text("tip"));
     const vrrw_kinematics::IkSolver solver(chain);
     vrrw_kinematics::IkOptions options;
     options.tolerance = args.number("tolerance", 1e-5);
     options.timeout = args.number("timeout-ms", 5.0) / 1000.0;
     options.allow_analytic = !args.has("numeric");
-    const long samples = args.integer("samples", 10000);
-    std::mt19937_64 rng(static_cast<std::uint64_t>(args.integer("seed", 1)));
+    const long samples = static_cast<long>(args.count("samples", 10000, 1, 100000000));
+    std::mt19937_64 rng(static_cast<std::uint64_t>(args.count("seed", 1, 0, vrrw_common::Options::kMaxCount)));
     const Eigen::VectorXd seed = chain.midLimits();
     std::vector<double> times_us;
     long successes = 0;

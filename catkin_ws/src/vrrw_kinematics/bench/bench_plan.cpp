@@ -8,12 +8,13 @@
 #include <sstream>
 #include <vrrw_scene/scene_loader.h>
 
-#include "bench_args.h"
+#include <vrrw_common/options.h>
+
+#include "bench_support.h"
 #include "vrrw_kinematics/motion_planner.h"
 #include "vrrw_kinematics/scene_state.h"
 #include "vrrw_kinematics/time_parameterization.h"
 
-using vrrw_kinematics::BenchArgs;
 
 namespace
 {
@@ -40,11 +41,11 @@ int main(int argc, char** argv)
 {
   try
   {
-    const BenchArgs args(argc, argv, { "verbose" });
-    const long queries = args.integer("queries", 100);
-    const auto seed = static_cast<std::uint64_t>(args.integer("seed", 1));
+    const vrrw_common::Options args(argc, argv, 1, { "queries", "seed", "scene", "robot", "planner", "time-limit", "shortcuts" }, { "verbose" });
+    const long queries = static_cast<long>(args.count("queries", 100, 1, 100000000));
+    const auto seed = static_cast<std::uint64_t>(args.count("seed", 1, 0, vrrw_common::Options::kMaxCount));
     ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(seed));
-    const vrrw_scene::Scene scene = vrrw_scene::loadScene(args.required("scene"));
+    const vrrw_scene::Scene scene = vrrw_scene::loadScene(args.text("scene"));
     vrrw_kinematics::CollisionWorld world = vrrw_kinematics::CollisionWorld::fromScene(scene);
     world.loadOrComputeAllowedCollisions(scene.cache_dir);
     const Eigen::VectorXd initial = vrrw_kinematics::initialState(world.model(), scene);
@@ -76,7 +77,7 @@ int main(int argc, char** argv)
         request.planner = args.text("planner", "RRTConnect");
         request.time_limit = args.number("time-limit", 1.0);
         request.seed = seed + static_cast<std::uint64_t>(query);
-        request.shortcut_attempts = static_cast<int>(args.integer("shortcuts", 0));
+        request.shortcut_attempts = static_cast<int>(static_cast<long>(args.count("shortcuts", 0, 0, 100000)));
         const auto start = std::chrono::steady_clock::now();
         const double cpu_start = vrrw_kinematics::threadCpuSeconds();
         const vrrw_kinematics::PlanResult result = planner.plan(request);

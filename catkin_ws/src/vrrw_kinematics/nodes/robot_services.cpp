@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <tf2_eigen/tf2_eigen.h>
+#include <vrrw_common/joint_mapping.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
 namespace vrrw_kinematics
@@ -53,9 +54,7 @@ std::string RobotServices::linkOrTcp(const std::string& link) const
 std::string RobotServices::staleWarning(const sensor_msgs::JointState& given) const
 {
   const auto& joints = arm_.jointNames();
-  const bool all_given = std::all_of(joints.begin(), joints.end(), [&](const std::string& joint) {
-    return std::find(given.name.begin(), given.name.end(), joint) != given.name.end();
-  });
+  const bool all_given = vrrw_common::findJoints(given.name, joints).has_value();
   const std::optional<double> age = context_.stateAge(arm_.robot().name);
   if (all_given || !age || *age <= stale_after_)
     return "";
@@ -153,20 +152,20 @@ Eigen::VectorXd RobotServices::goalJoints(const sensor_msgs::JointState& goal, c
     throw KinematicsError(ErrorCode::InvalidArgument, "goal_joints: " + std::to_string(goal.name.size()) +
                                                           " names but " + std::to_string(goal.position.size()) +
                                                           " positions");
-  const auto& joints = arm_.jointNames();
-  Eigen::VectorXd values = start;
-  for (std::size_t i = 0; i < goal.name.size(); ++i)
+  std::vector<std::size_t> at;
+  try
   {
-    const std::string& name = goal.name[i];
-    if (std::find(goal.name.begin(), goal.name.begin() + static_cast<std::ptrdiff_t>(i), name) !=
-        goal.name.begin() + static_cast<std::ptrdiff_t>(i))
-      throw KinematicsError(ErrorCode::InvalidArgument, "goal_joints: joint " + name + ": named twice");
-    const auto it = std::find(joints.begin(), joints.end(), name);
-    if (it == joints.end())
-      throw KinematicsError(ErrorCode::InvalidArgument,
-                            "goal_joints: joint " + name + ": not in the arm of " + arm_.robot().name);
-    values[it - joints.begin()] = goal.position[i];
+    at = vrrw_common::robotIndices(goal.name, arm_.jointNames());
   }
+  catch (const vrrw_common::JointMappingError& e)
+  {
+    throw KinematicsError(ErrorCode::InvalidArgument,
+                          "goal_joints: joint " + e.joint() + ": " +
+                              (e.reason() == "named twice" ? e.reason() : "not in the arm of " + arm_.robot().name));
+  }
+  Eigen::VectorXd values = start;
+  for (std::size_t i = 0; i < at.size(); ++i)
+    values[static_cast<Eigen::Index>(at[i])] = goal.position[i];
   return values;
 }
 

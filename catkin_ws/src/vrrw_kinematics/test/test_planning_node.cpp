@@ -2,6 +2,7 @@
 #include <cmath>
 #include <limits>
 #include <ros/ros.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include <vrrw_msgs/AttachObject.h>
 #include <vrrw_msgs/CheckState.h>
 #include <vrrw_msgs/ComputeFK.h>
@@ -25,8 +26,8 @@ template <typename Service>
 Service call(const std::string& name, Service service)
 {
   EXPECT_TRUE(ros::service::waitForService(name, ros::Duration(30.0))) << name;
-  // persistent: the server never closes it, so its answer cannot be lost (ros_comm#1976)
-  EXPECT_TRUE(ros::NodeHandle().serviceClient<Service>(name, true).call(service)) << name;
+  std::string error;
+  EXPECT_TRUE(vrrw_common::services().tryCall(name, service, &error)) << error;
   return service;
 }
 }  // namespace
@@ -190,7 +191,7 @@ TEST(PlanningNode, BadRequestsGetCodesAndTheNodeStaysUp)
   EXPECT_EQ(call("/ur5e/check_state", mimic_ignored).response.error_code, 0);
 
   vrrw_msgs::CheckState still_up;
-  EXPECT_TRUE(ros::service::call("/ur5e/check_state", still_up));
+  EXPECT_TRUE(vrrw_common::services().tryCall("/ur5e/check_state", still_up));
 }
 
 TEST(PlanningNode, PlanRequestsWithoutAUsableGoalOrTimeLimitAreRefused)

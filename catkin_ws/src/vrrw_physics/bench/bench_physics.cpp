@@ -1,6 +1,7 @@
 // vrrw_bench_physics: steps a scene as fast as possible on one thread, every robot holding its initial pose
 // against gravity; reports steps_per_s, real-time factor (wall clock, and CPU time of this process: the
 // machine is shared) and the largest hold error. Last line: JSON. --help for the options.
+#include <vrrw_common/options.h>
 #include <vrrw_physics/physics_world.h>
 #include <vrrw_scene/scene_loader.h>
 
@@ -38,68 +39,44 @@ struct Settings
   vrrw_physics::WorldOptions options;
 };
 
-/// Reads the command line into `s`; returns an exit code (0: run, -1: --help shown).
-int parse(int argc, char** argv, Settings& s)
+/// Reads the command line into `s`; false when --help was shown. Throws vrrw_common::OptionError.
+bool parse(int argc, char** argv, Settings& s)
 {
-  for (int i = 1; i < argc; ++i)
+  const vrrw_common::Options o(argc, argv, 1,
+                               { "scene", "seconds", "dt", "mode", "iterations", "inner", "residual", "drives" }, { "help" });
+  if (o.flag("help") || (argc > 1 && std::string(argv[1]) == "-h"))
   {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h")
-    {
-      std::cout << kUsage;
-      return -1;
-    }
-    if (i + 1 >= argc)
-    {
-      std::cerr << "vrrw_bench_physics: " << arg << ": missing value (--help lists the options)\n";
-      return 2;
-    }
-    const std::string value = argv[++i];
-    try
-    {
-      if (arg == "--scene")
-        s.scene = value;
-      else if (arg == "--seconds")
-        s.seconds = std::stod(value);
-      else if (arg == "--dt")
-        s.options.dt = std::stod(value);
-      else if (arg == "--mode")
-        s.options.mode = vrrw_physics::parseDriveMode(value);
-      else if (arg == "--iterations")
-        s.options.solver_iterations = std::stoi(value);
-      else if (arg == "--inner")
-        s.options.solver_inner_iterations = std::stoi(value);
-      else if (arg == "--residual")
-        s.options.solver_residual = std::stod(value);
-      else if (arg == "--drives")
-        s.options.drive_scheme = vrrw_physics::parseDriveScheme(value);
-      else
-      {
-        std::cerr << "vrrw_bench_physics: unknown option " << arg << " (--help lists the options)\n";
-        return 2;
-      }
-    }
-    catch (const std::exception& e)
-    {
-      std::cerr << "vrrw_bench_physics: " << arg << " " << value << ": " << e.what() << "\n";
-      return 2;
-    }
+    std::cout << kUsage;
+    return false;
   }
-  if (!(s.seconds > 0.0) || !(s.seconds <= 3600.0))
-  {
-    std::cerr << "vrrw_bench_physics: --seconds " << s.seconds << ": outside (0, 3600]\n";
-    return 2;
-  }
-  return 0;
+  o.expectPositional({});
+  s.scene = o.text("scene", s.scene);
+  s.seconds = o.number("seconds", s.seconds, vrrw_common::Range::aboveUpTo(0.0, 3600.0));
+  s.options.dt = o.number("dt", s.options.dt);
+  if (o.has("mode"))
+    s.options.mode = vrrw_physics::parseDriveMode(o.text("mode"));
+  s.options.solver_iterations = static_cast<int>(o.count("iterations", s.options.solver_iterations, 1, 100000));
+  s.options.solver_inner_iterations = static_cast<int>(o.count("inner", s.options.solver_inner_iterations, 0, 100000));
+  s.options.solver_residual = o.number("residual", s.options.solver_residual);
+  if (o.has("drives"))
+    s.options.drive_scheme = vrrw_physics::parseDriveScheme(o.text("drives"));
+  return true;
 }
 }  // namespace
 
 int main(int argc, char** argv)
 {
   Settings settings;
-  const int parsed = parse(argc, argv, settings);
-  if (parsed != 0)
-    return parsed < 0 ? 0 : parsed;
+  try
+  {
+    if (!parse(argc, argv, settings))
+      return 0;
+  }
+  catch (const std::exception& e)  // an option, or a drive mode or scheme parseDrive* does not know
+  {
+    std::cerr << "vrrw_bench_physics: " << e.what() << " (--help lists the options)\n";
+    return 2;
+  }
   const vrrw_physics::WorldOptions& options = settings.options;
   // Progress rewrites one line on a terminal; in a captured log every report is a line of its own.
   const char* progress_end = isatty(STDERR_FILENO) ? "\r" : "\n";

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <vrrw_common/joint_mapping.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/String.h>
@@ -55,8 +57,8 @@ struct Listener
 
   double position(const std::string& joint) const
   {
-    const auto it = std::find(last.name.begin(), last.name.end(), joint);
-    return it == last.name.end() ? std::numeric_limits<double>::quiet_NaN() : last.position[std::size_t(it - last.name.begin())];
+    const auto q = vrrw_common::findValues(last.name, last.position, { joint });
+    return q ? q->front() : std::numeric_limits<double>::quiet_NaN();
   }
 
   int errorsMentioning(const std::string& text) const
@@ -77,7 +79,7 @@ struct Listener
 bool trigger(const std::string& service)
 {
   std_srvs::Trigger srv;
-  return ros::service::call(service, srv) && srv.response.success;
+  return vrrw_common::services().tryCall(service, srv) && srv.response.success;
 }
 }  // namespace
 
@@ -133,13 +135,13 @@ TEST(PhysicsNode, BadInputIsReportedAndTheNodeKeepsRunning)
   gains.request.robot = "ur5e";
   gains.request.stiffness = { 1.0, 2.0 };
   gains.request.damping = { 1.0, 2.0 };
-  ASSERT_TRUE(ros::service::call("/physics/set_gains", gains));
+  ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_gains", gains));
   EXPECT_FALSE(gains.response.success);
   EXPECT_NE(gains.response.message.find("6 joint names but 2"), std::string::npos) << gains.response.message;
   gains.request.joints = { "ur5e_elbow_joint" };
   gains.request.stiffness = { -5.0 };
   gains.request.damping = { 1.0 };
-  ASSERT_TRUE(ros::service::call("/physics/set_gains", gains));
+  ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_gains", gains));
   EXPECT_FALSE(gains.response.success);
 
   vrrw_physics::SetSpring spring;
@@ -147,7 +149,7 @@ TEST(PhysicsNode, BadInputIsReportedAndTheNodeKeepsRunning)
   spring.request.body = "ur5e_no_such_link";
   spring.request.target.orientation.w = 1.0;
   spring.request.stiffness = 100.0;
-  ASSERT_TRUE(ros::service::call("/physics/set_spring", spring));
+  ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_spring", spring));
   EXPECT_FALSE(spring.response.success);
   EXPECT_NE(spring.response.message.find("ur5e_no_such_link"), std::string::npos);
 
@@ -183,7 +185,7 @@ TEST(PhysicsNode, CompliantArmFollowsAnOperatorSpring)
   vrrw_physics::SetMode mode;
   mode.request.robot = "ur5e";
   mode.request.mode = "compliant";
-  ASSERT_TRUE(ros::service::call("/physics/set_mode", mode) && mode.response.success) << mode.response.message;
+  ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_mode", mode) && mode.response.success) << mode.response.message;
   vrrw_physics::SetSpring spring;
   spring.request.id = "hand";
   spring.request.body = "ur5e_tool0";
@@ -191,7 +193,7 @@ TEST(PhysicsNode, CompliantArmFollowsAnOperatorSpring)
   spring.request.target.orientation.w = 1.0;
   spring.request.stiffness = 1000.0;
   spring.request.max_force = 20.0;
-  ASSERT_TRUE(ros::service::call("/physics/set_spring", spring) && spring.response.success) << spring.response.message;
+  ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_spring", spring) && spring.response.success) << spring.response.message;
   const double pan = l.position("ur5e_shoulder_pan_joint");
   EXPECT_TRUE(l.waitFor([&] { return std::abs(l.position("ur5e_shoulder_pan_joint") - pan) > 0.05; }, 5.0));
   vrrw_physics::SpringTarget target;
@@ -200,9 +202,9 @@ TEST(PhysicsNode, CompliantArmFollowsAnOperatorSpring)
   move.publish(target);
   EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("nobody"); }, 5.0));
   spring.request.release = true;
-  ASSERT_TRUE(ros::service::call("/physics/set_spring", spring) && spring.response.success);
+  ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_spring", spring) && spring.response.success);
   mode.request.mode = "rigid";
-  ASSERT_TRUE(ros::service::call("/physics/set_mode", mode) && mode.response.success);
+  ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_mode", mode) && mode.response.success);
   const int after = l.count;
   ASSERT_TRUE(l.waitFor([&] { return l.count > after + 2; }, 5.0));
   const double held = l.position("ur5e_shoulder_pan_joint");
@@ -256,7 +258,7 @@ TEST(PhysicsNode, WildInputIsRefusedAndRepeatedErrorsAreRateLimited)
   spring.request.target.orientation.w = 1.0;
   spring.request.stiffness = 1e12;
   spring.request.max_force = 1e12;
-  ASSERT_TRUE(ros::service::call("/physics/set_spring", spring));
+  ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_spring", spring));
   EXPECT_FALSE(spring.response.success);
   EXPECT_NE(spring.response.message.find("stiffness: 1e+12 outside [0, 10000] N/m"), std::string::npos)
       << spring.response.message;
@@ -264,12 +266,12 @@ TEST(PhysicsNode, WildInputIsRefusedAndRepeatedErrorsAreRateLimited)
   pose.request.object = "drill";
   pose.request.pose.position.x = 1e300;
   pose.request.pose.orientation.w = 1.0;
-  ASSERT_TRUE(ros::service::call("/physics/set_object_pose", pose));
+  ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_object_pose", pose));
   EXPECT_FALSE(pose.response.success);
   EXPECT_NE(pose.response.message.find("outside [-100, 100] m"), std::string::npos) << pose.response.message;
   pose.request.object = "table";
   pose.request.pose.position.x = 0.0;
-  ASSERT_TRUE(ros::service::call("/physics/set_object_pose", pose));
+  ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_object_pose", pose));
   EXPECT_NE(pose.response.message.find("fixed"), std::string::npos) << pose.response.message;
   // 300 bad targets in 0.3 s: one error line, then at most one a second that counts the rest.
   sensor_msgs::JointState bad;

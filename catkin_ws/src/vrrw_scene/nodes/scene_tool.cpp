@@ -1,9 +1,10 @@
-// vrrw_scene SCENE [--urdf-out FILE|-] [--timing] [--no-cache]: expands a scene and reports it.
-#include <cstring>
+// vrrw_scene SCENE [--urdf-out FILE|-] [--robots] [--timing] [--no-cache]: expands a scene and reports it;
+// --urdf-out writes the URDF with any of the others.
 #include <fstream>
 #include <iostream>
 
 #include "vrrw_scene/scene_loader.h"
+#include <vrrw_common/options.h>
 
 namespace
 {
@@ -25,64 +26,67 @@ void summarize(const vrrw_scene::Scene& scene)
     std::cerr << "  object " << object.name << " (" << object.kind << "): " << object.mass << " kg"
               << (object.fixed ? ", fixed" : "") << "\n";
 }
+
+/// Writes the URDF to \a path ("-": stdout).
+void writeUrdf(const vrrw_scene::Scene& scene, const std::string& path)
+{
+  if (path == "-")
+  {
+    std::cout << scene.urdf;
+    return;
+  }
+  std::ofstream out(path);
+  out << scene.urdf;
+  if (!out)
+    throw vrrw_scene::SceneError(path + ": cannot write the URDF");
+  std::cerr << "wrote " << path << "\n";
+}
+
+int run(const vrrw_common::Options& options)
+{
+  options.expectPositional({ "SCENE" });
+  const std::string scene_name = options.positional()[0], urdf_out = options.text("urdf-out", "");
+  vrrw_scene::LoadOptions load;
+  load.use_cache = !options.flag("no-cache");
+  if (options.flag("timing"))
+  {
+    vrrw_scene::LoadOptions cold = load;
+    cold.use_cache = false;
+    const auto first = vrrw_scene::loadScene(scene_name, cold);
+    const auto second = vrrw_scene::loadScene(scene_name, load);
+    summarize(second);
+    if (!urdf_out.empty())
+      writeUrdf(second, urdf_out);
+    std::cout << "{\"scene\": \"" << second.name << "\", \"cold_s\": " << first.load_seconds
+              << ", \"cached_s\": " << second.load_seconds << "}" << std::endl;
+    return 0;
+  }
+  const auto scene = vrrw_scene::loadScene(scene_name, load);
+  if (!options.flag("robots"))
+    summarize(scene);
+  if (!urdf_out.empty())
+    writeUrdf(scene, urdf_out);
+  if (options.flag("robots"))
+    for (const auto& robot : scene.robots)
+      std::cout << robot.name << "\n";
+  return 0;
+}
 }  // namespace
 
 int main(int argc, char** argv)
 {
-  if (argc < 2 || argv[1][0] == '-')
-    return usage();
-  std::string scene_name = argv[1], urdf_out;
-  bool timing = false, list_robots = false;
-  vrrw_scene::LoadOptions options;
-  for (int i = 2; i < argc; ++i)
-  {
-    if (!std::strcmp(argv[i], "--urdf-out") && i + 1 < argc)
-      urdf_out = argv[++i];
-    else if (!std::strcmp(argv[i], "--robots"))
-      list_robots = true;
-    else if (!std::strcmp(argv[i], "--timing"))
-      timing = true;
-    else if (!std::strcmp(argv[i], "--no-cache"))
-      options.use_cache = false;
-    else
-      return usage();
-  }
   try
   {
-    if (timing)
-    {
-      vrrw_scene::LoadOptions cold = options;
-      cold.use_cache = false;
-      const auto first = vrrw_scene::loadScene(scene_name, cold);
-      const auto second = vrrw_scene::loadScene(scene_name, options);
-      summarize(second);
-      std::cout << "{\"scene\": \"" << second.name << "\", \"cold_s\": " << first.load_seconds
-                << ", \"cached_s\": " << second.load_seconds << "}" << std::endl;
-      return 0;
-    }
-    const auto scene = vrrw_scene::loadScene(scene_name, options);
-    if (list_robots)
-    {
-      for (const auto& robot : scene.robots)
-        std::cout << robot.name << "\n";
-      return 0;
-    }
-    summarize(scene);
-    if (urdf_out == "-")
-      std::cout << scene.urdf;
-    else if (!urdf_out.empty())
-    {
-      std::ofstream out(urdf_out);
-      out << scene.urdf;
-      if (!out)
-        throw vrrw_scene::SceneError(urdf_out + ": cannot write the URDF");
-      std::cerr << "wrote " << urdf_out << "\n";
-    }
+    return run(vrrw_common::Options(argc, argv, 1, { "urdf-out" }, { "robots", "timing", "no-cache" }));
+  }
+  catch (const vrrw_common::OptionError& e)
+  {
+    std::cerr << "vrrw_scene: " << e.what() << "\n";
+    return usage();
   }
   catch (const std::exception& e)
   {
     std::cerr << "vrrw_scene: " << e.what() << std::endl;
     return 1;
   }
-  return 0;
 }

@@ -138,11 +138,11 @@ def pose_ghost(spec, timeout):
     robot, _, preset = spec.partition('=')
     if not robot or not preset:
         raise RuntimeError(f"'{spec}': expected ROBOT=PRESET")
+    from vrrw_common.services import PersistentServices, ServiceCallError
     try:
-        rospy.wait_for_service(f'/{robot}/ghost/preset', timeout)
-    except rospy.ROSException:
-        raise RuntimeError(f"'{spec}': no service /{robot}/ghost/preset (unknown robot?)")
-    answer = rospy.ServiceProxy(f'/{robot}/ghost/preset', GhostPreset)(preset)
+        answer = PersistentServices(wait_seconds=timeout).call(f'/{robot}/ghost/preset', GhostPreset, preset)
+    except ServiceCallError as error:
+        raise RuntimeError(f"'{spec}': {error} (unknown robot?)")
     if not answer.success:
         raise RuntimeError(f"'{spec}': {answer.message}")
     time.sleep(0.5)  # the ghost frames reach rviz

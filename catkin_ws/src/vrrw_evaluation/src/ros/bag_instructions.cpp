@@ -6,6 +6,7 @@
 #include <control_msgs/GripperCommandActionGoal.h>
 #include <sensor_msgs/JointState.h>
 #include <stdexcept>
+#include <vrrw_common/joint_mapping.h>
 #include <vrrw_msgs/Event.h>
 
 namespace vrrw_evaluation
@@ -76,17 +77,12 @@ BagTrack bagTrack(const std::string& bag, const std::string& robot, const std::v
         continue;
       vrrw_trajectory::TrajectoryPoint point;
       point.time = msg->header.stamp.toSec() - start_stamp;
-      for (const std::string& joint : arm_joints)
+      const auto positions = vrrw_common::findValues(msg->name, msg->position, arm_joints);
+      if (positions && (track.arm.points.empty() || point.time > track.arm.points.back().time))
       {
-        const auto found = std::find(msg->name.begin(), msg->name.end(), joint);
-        const std::size_t i = std::size_t(found - msg->name.begin());
-        if (found == msg->name.end() || i >= msg->position.size())
-          break;
-        point.positions.push_back(msg->position[i]);
-      }
-      if (point.positions.size() == arm_joints.size() &&
-          (track.arm.points.empty() || point.time > track.arm.points.back().time))
+        point.positions = *positions;
         track.arm.points.push_back(point);
+      }
     }
   }
   catch (const rosbag::BagException& e)

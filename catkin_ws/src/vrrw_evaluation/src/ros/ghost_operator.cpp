@@ -37,7 +37,7 @@ bool GhostOperator::trigger(const std::string& service, std::string& error)
 {
   std_srvs::Trigger call;
   use(prefix_ + service);
-  if (!links_.call(prefix_ + service, call))
+  if (!links_.tryCall(prefix_ + service, call))
     return error = prefix_ + service + ": call failed", false;
   if (!call.response.success)
     return error = prefix_ + service + ": " + call.response.message, false;
@@ -50,7 +50,7 @@ bool GhostOperator::setPose(const Eigen::Isometry3d& tcp, std::string& error)
   call.request.pose.header.frame_id = "world";
   call.request.pose.pose = tf2::toMsg(tcp);
   use(prefix_ + "set_pose");
-  if (!links_.call(prefix_ + "set_pose", call))
+  if (!links_.tryCall(prefix_ + "set_pose", call))
     return error = prefix_ + "set_pose: call failed", false;
   if (!call.response.success)
     return error = prefix_ + "set_pose: " + call.response.message, false;
@@ -66,7 +66,7 @@ bool GhostOperator::drive(const std::vector<Eigen::Isometry3d>& waypoints, const
   vrrw_msgs::GhostSupportSurface support;  // every drive says what it may set its held object down on
   support.request.name = options.support_surface;
   use(prefix_ + "set_support_surface");
-  if (!links_.call(prefix_ + "set_support_surface", support))
+  if (!links_.tryCall(prefix_ + "set_support_surface", support))
     return error = prefix_ + "set_support_surface: call failed", false;
   if (!support.response.success)
     return error = prefix_ + "set_support_surface: " + support.response.message, false;
@@ -81,7 +81,7 @@ bool GhostOperator::drive(const std::vector<Eigen::Isometry3d>& waypoints, const
   plan.request.time_profile = options.time_profile;
   use(prefix_ + "plan");
   const ros::WallTime start = ros::WallTime::now();
-  if (!links_.call(prefix_ + "plan", plan))
+  if (!links_.tryCall(prefix_ + "plan", plan))
     return error = prefix_ + "plan: call failed", false;
   if (plan_ms)
     *plan_ms += (ros::WallTime::now() - start).toSec() * 1e3;
@@ -89,7 +89,7 @@ bool GhostOperator::drive(const std::vector<Eigen::Isometry3d>& waypoints, const
     return error = prefix_ + "plan: " + plan.response.message, false;
   vrrw_msgs::GhostExecute execute;
   use(prefix_ + "execute");
-  if (!links_.call(prefix_ + "execute", execute))
+  if (!links_.tryCall(prefix_ + "execute", execute))
     return error = prefix_ + "execute: call failed", false;
   if (!execute.response.success)
     return error = prefix_ + "execute: " + execute.response.message + " " + execute.response.error_string, false;

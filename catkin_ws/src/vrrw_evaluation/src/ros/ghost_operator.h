@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "service_links.h"
+#include <vrrw_common/ros/persistent_service.h>
 
 namespace vrrw_evaluation
 {
@@ -46,7 +46,7 @@ private:
 
   ros::NodeHandle& node_;
   std::string prefix_;  ///< /<robot>/ghost/
-  ServiceLinks links_;
+  vrrw_common::PersistentServices links_;
   std::vector<std::string> used_;
   void use(const std::string& service);
 };

@@ -45,7 +45,7 @@ bool HandOperator::setFreeDrive(bool on, std::string& error)
   std_srvs::SetBool call;
   call.request.data = on;
   const std::string service = "/" + robot_ + "/free_drive";
-  if (!links_.call(service, call))
+  if (!links_.tryCall(service, call))
     return error = service + ": call failed", false;
   if (!call.response.success)
     return error = service + ": " + call.response.message, false;

@@ -11,7 +11,7 @@
 #include <vector>
 #include <vrrw_msgs/Event.h>
 
-#include "service_links.h"
+#include <vrrw_common/ros/persistent_service.h>
 
 namespace vrrw_evaluation
 {
@@ -44,6 +44,6 @@ private:
   std::mutex mutex_;
   std::vector<std::string> events_seen_;  ///< kinds of this hand's /operator/events since the last drive
   std::vector<std::string> used_;
-  ServiceLinks links_;
+  vrrw_common::PersistentServices links_;
 };
 }  // namespace vrrw_evaluation

@@ -165,7 +165,7 @@ std::optional<std::vector<double>> WorkspaceClient::ik(const Eigen::Isometry3d& 
   srv.request.timeout = 0.05;
   srv.request.avoid_collisions = avoid_collisions;
   const ros::WallTime start = ros::WallTime::now();
-  const bool called = links_.call(ik_, srv);
+  const bool called = links_.tryCall(ik_, srv);
   if (ik_ms)
     *ik_ms += (ros::WallTime::now() - start).toSec() * 1000.0;
   if (!called)
@@ -190,7 +190,7 @@ std::optional<vrrw_trajectory::JointTrajectory> WorkspaceClient::plan(const std:
   srv.request.goal_joints = jointState(robot_.arm_joints, goal);
   srv.request.time_limit = 2.0;
   srv.request.seed = 1;
-  if (!links_.call(plan_, srv))
+  if (!links_.tryCall(plan_, srv))
     return error = "plan did not answer", std::nullopt;
   if (srv.response.error_code != 0)
     return error = srv.response.message, std::nullopt;
@@ -208,7 +208,7 @@ bool WorkspaceClient::placeObject(const Eigen::Isometry3d& pose, std::string& er
   vrrw_physics::SetObjectPose srv;
   srv.request.object = object_;
   srv.request.pose = tf2::toMsg(pose);
-  if (!links_.call(kPlace, srv) || !srv.response.success)
+  if (!links_.tryCall(kPlace, srv) || !srv.response.success)
     return error = "set_object_pose: " + srv.response.message, false;
   for (int i = 0; i < 100; ++i)
   {
@@ -229,7 +229,7 @@ void WorkspaceClient::startRecording(const std::string& bag_file)
     start.request.file = bag_file;
     start.request.robots = { robot_.name };
     const bool recorder = ros::service::waitForService("/demos/start", ros::Duration(3.0));
-    demos_recording_ = recorder && links_.call("/demos/start", start) && start.response.success;
+    demos_recording_ = recorder && links_.tryCall("/demos/start", start) && start.response.success;
     if (recorder && !demos_recording_)
       ROS_WARN_STREAM("/demos/start: " << start.response.message << "; recording with demo_runner's own bag");
   }
@@ -253,7 +253,7 @@ Recording WorkspaceClient::stopRecording()
   if (demos_recording_)
   {
     vrrw_msgs::DemoStop stop;
-    if (links_.call("/demos/stop", stop) && stop.response.success)
+    if (links_.tryCall("/demos/stop", stop) && stop.response.success)
       demos_messages = stop.response.messages;
     else
       ROS_WARN_STREAM("/demos/stop: " << stop.response.message);
@@ -287,7 +287,7 @@ void WorkspaceClient::annotate(const std::string& kind, const std::string& detai
     vrrw_msgs::DemoAnnotate annotate;
     annotate.request.stamp = event.header.stamp;  // the bag's event at the instant the runner's clock says
     annotate.request.text = kind + " " + detail;
-    links_.call("/demos/annotate", annotate);
+    links_.tryCall("/demos/annotate", annotate);
   }
   std::lock_guard<std::mutex> lock(mutex_);
   if (!recording_)

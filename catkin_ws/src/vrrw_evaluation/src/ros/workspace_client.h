@@ -16,7 +16,7 @@
 #include <vrrw_scene/scene.h>
 #include <vrrw_trajectory/joint_trajectory.h>
 
-#include "service_links.h"
+#include <vrrw_common/ros/persistent_service.h>
 
 namespace vrrw_evaluation
 {
@@ -103,7 +103,7 @@ private:
   actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> arm_;
   actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper_;
   std::string ik_, plan_;  ///< /<robot>/compute_ik, /<robot>/plan
-  ServiceLinks links_;
+  vrrw_common::PersistentServices links_;
   bool demos_recording_ = false;
   ros::Subscriber joint_states_, contacts_;
   ros::Timer track_timer_;

@@ -1,0 +1,126 @@
+"""./vrrw's options: every mistake is one line naming the option, exit 2, checked before anything is
+started, written or deleted; tools that need a workspace say so within seconds when none runs."""
+import os
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+ROOT = os.environ.get('VRRW_ROOT', os.path.abspath(os.path.join(os.path.dirname(__file__), '../../../..')))
+VRRW = os.path.join(ROOT, 'vrrw')
+sys.path.insert(0, os.path.join(ROOT, 'catkin_ws', 'src', 'vrrw_evaluation', 'scripts'))
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(('127.0.0.1', 0))
+        return s.getsockname()[1]
+
+
+def vrrw(*args, master_port=None):
+    env = dict(os.environ)
+    if master_port:  # nothing listens there
+        env['ROS_MASTER_URI'] = f'http://localhost:{master_port}'
+    start = time.monotonic()
+    result = subprocess.run([VRRW, *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
+                            timeout=60)
+    result.seconds = time.monotonic() - start
+    return result
+
+
+class Refusals(unittest.TestCase):
+    def refused(self, line, *args, code=2):
+        result = vrrw(*args)
+        self.assertEqual((result.returncode, result.stderr), (code, line + '\n'), result.stdout)
+        return result
+
+    def test_demo_validates_every_option_before_touching_its_out_directory(self):
+        out = tempfile.mkdtemp(prefix='vrrw_options_')
+        os.makedirs(os.path.join(out, 'frames'))
+        with open(os.path.join(out, 'workspace.log'), 'w') as f:
+            f.write('an earlier run\n')
+        self.refused('vrrw: demo: --trials: -1 is not a whole number >= 1', 'demo', '--out', out, '--trials', '-1')
+        self.refused('vrrw: demo: --trials: 2.5 is not a whole number >= 1', 'demo', '--out', out, '--trials', '2.5')
+        self.refused("vrrw: demo: --trials: 'many' is not a whole number >= 1", 'demo', '--trials', 'many')
+        self.refused('vrrw: demo: --trials: 5000 outside [1, 1000]', 'demo', '--out', out, '--trials', '5000')
+        self.refused('vrrw: demo: --trials: needs a value', 'demo', '--out', out, '--trials')
+        self.refused('vrrw: demo: --trials: needs a value', 'demo', '--trials', '--quick')
+        self.refused('vrrw: demo: --seed: -3 is not a whole number >= 0', 'demo', '--seed', '-3')
+        self.refused('vrrw: demo: unknown option --trails', 'demo', '--trails', '5')
+        self.refused('vrrw: demo: --quick: takes no value', 'demo', '--quick=yes')
+        self.refused("vrrw: demo: unexpected argument 'extra'", 'demo', 'extra')
+        self.refused('vrrw: demo: --yes confirms --real NS, which was not given', 'demo', '--yes')
+        self.assertTrue(os.path.isdir(os.path.join(out, 'frames')))
+        with open(os.path.join(out, 'workspace.log')) as f:
+            self.assertEqual(f.read(), 'an earlier run\n')
+
+    def test_demo_out_must_be_a_directory_it_can_write(self):
+        with tempfile.NamedTemporaryFile() as existing:
+            self.refused(f'vrrw: demo: --out: {existing.name}: exists and is not a directory',
+                         'demo', '--out', existing.name)
+        self.refused('vrrw: demo: --out: /proc: not writable', 'demo', '--out', '/proc/vrrw_report')
+
+    def test_up_and_test(self):
+        self.refused('vrrw: up: --mode: needs a value', 'up', 'pick_place_drill', '--mode')
+        self.refused("vrrw: up: --mode: 'phys' is not one of fake physics none", 'up', 'pick_place_drill',
+                     '--mode', 'phys')
+        self.refused('vrrw: up: missing SCENE', 'up', '--mode', 'fake')
+        self.refused("vrrw: up: 'x$(env HOME)': a name or path with $( cannot be passed to roslaunch", 'up',
+                     'x$(env HOME)')
+        self.refused('vrrw: test: --repeat: 0 is not a whole number >= 1', 'test', '--repeat', '0')
+
+    def test_record_refuses_before_recording(self):
+        with tempfile.NamedTemporaryFile(suffix='.bag') as existing:
+            self.refused(f'vrrw: record: --out: {existing.name}: exists; not overwritten', 'record', 'running',
+                         '--out', existing.name)
+        self.refused('vrrw: record: --out: required (FILE.bag)', 'record', 'running')
+        self.refused("vrrw: record: --robots: 'a b' is not a list of robot names (a,b)", 'record', 'running',
+                     '--out', '/tmp/vrrw_never.bag', '--robots', 'a b')
+        self.refused('vrrw: record: --out: /nonexistent_dir: no such directory', 'record', 'running', '--out',
+                     '/nonexistent_dir/a.bag')
+
+    def test_an_explicit_trials_beats_the_quick_preset(self):
+        import run_demo
+        self.assertEqual(run_demo.parse_args(['--launch', 'x', '--quick', '--trials', '5']).trials, 5)
+        self.assertEqual(run_demo.parse_args(['--launch', 'x', '--quick']).trials, 3)
+        self.assertEqual(run_demo.parse_args(['--launch', 'x']).trials, 20)
+
+
+class WithoutWorkspace(unittest.TestCase):
+    """No master at ROS_MASTER_URI: one line within the check's 2 s, exit 1 (roscpp would retry forever)."""
+
+    def check(self, *args, line_start):
+        port = free_port()
+        result = vrrw(*args, master_port=port)
+        print(f'{" ".join(args)}: answered in {result.seconds:.1f} s')
+        self.assertEqual(result.returncode, 1, result.stderr)
+        self.assertEqual(result.stderr, f'{line_start}no workspace at http://localhost:{port}: start one with '
+                                        './vrrw up SCENE\n')
+        self.assertLess(result.seconds, 30.0)  # bounded; only a hang fails this
+
+    def test_send(self):
+        self.check('send', 'ur5e', '--joints', '0,-1.57,1.57,-1.57,-1.57,0', line_start='vrrw_arm: ')
+
+    def test_move(self):
+        self.check('move', 'ur5e', '--joints', '0,-1.57,1.57,-1.57,-1.57,0', line_start='vrrw_arm: ')
+
+    def test_record_running(self):
+        self.check('record', 'running', '--out', os.path.join(tempfile.mkdtemp(), 'a|b.bag'),
+                   line_start='vrrw: record: ')
+
+    def test_demos_replay(self):
+        folder = tempfile.mkdtemp(prefix='vrrw_options_')
+        csv, bag = os.path.join(folder, 'demo.csv'), os.path.join(folder, 'demo.bag')
+        with open(csv, 'w') as f:
+            f.write('t,q1,q2,q3,q4,q5,q6,qd1,qd2,qd3,qd4,qd5,qd6,gripper\n')
+            for k in range(3):
+                f.write(f'{0.1 * k},{0.01 * k},-1.57,1.57,-1.57,-1.57,0,0.1,0,0,0,0,0,0\n')
+        imported = vrrw('demos', 'import', csv, '--bag', bag, '--robot', 'ur5e')
+        self.assertEqual(imported.returncode, 0, imported.stderr)
+        self.check('demos', 'replay', bag, '--mode', 'fake', line_start='vrrw demos replay: ')
+
+
+if __name__ == '__main__':
+    unittest.main()
