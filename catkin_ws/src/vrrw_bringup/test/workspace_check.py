@@ -19,8 +19,8 @@ class PlanAndExecute(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node('workspace_check')
         services = PersistentServices(wait_seconds=60)
-        cls.plan = lambda **request: services.call('/ur5e/plan', Plan, **request)
-        cls.check = lambda **request: services.call('/ur5e/check_state', CheckState, **request)
+        cls.plan = staticmethod(lambda **request: services.call('/ur5e/plan', Plan, **request))
+        cls.check = staticmethod(lambda **request: services.call('/ur5e/check_state', CheckState, **request))
         cls.arm = actionlib.SimpleActionClient('/ur5e/arm_controller/follow_joint_trajectory',
                                                FollowJointTrajectoryAction)
         assert cls.arm.wait_for_server(rospy.Duration(60))
