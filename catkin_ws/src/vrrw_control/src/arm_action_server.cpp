@@ -87,7 +87,7 @@ std::pair<int, std::string> ArmActionServer::admissible(const control_msgs::Foll
 void ArmActionServer::onGoal(GoalHandle gh)
 {
   const auto goal = gh.getGoal();
-  const ros::Time now = ros::Time::now();
+  const ros::Time now = options_.clock();
   const ros::Time start = goal->trajectory.header.stamp.isZero() ? now : goal->trajectory.header.stamp;
   const auto [code, why] = admissible(*goal, start, now);
   if (!why.empty())
@@ -126,6 +126,7 @@ void ArmActionServer::onGoal(GoalHandle gh)
   goal_start_ = plan.start;
   active_ = gh;
   phase_ = Phase::Simulating;
+  last_feedback_ = ros::Time();
 }
 
 void ArmActionServer::onCancel(GoalHandle gh)
@@ -133,7 +134,7 @@ void ArmActionServer::onCancel(GoalHandle gh)
   if (phase_ == Phase::Idle || !(gh == active_))
     return;
   if (phase_ == Phase::Simulating)
-    arm_.stop(toTime(ros::Time::now()));
+    arm_.stop(toTime(options_.clock()));
   if (phase_ == Phase::Relaying)
     relay_->cancel();
   Result r;
@@ -245,7 +246,7 @@ void ArmActionServer::publishFeedback(const ros::Time& now, const ArmController:
 void ArmActionServer::update(const ros::Time& now)
 {
   if (suspended_ && updated_)
-    ROS_INFO_STREAM(name_ << ": joint_states are back; holding the measured pose");
+    ROS_INFO_STREAM(name_ << ": running again; holding the measured pose");
   suspended_ = false;
   updated_ = true;
   if (real_ && real_->ready() && (phase_ == Phase::Idle || phase_ == Phase::Relaying))
@@ -253,7 +254,12 @@ void ArmActionServer::update(const ros::Time& now)
   const ArmController::Cycle c = arm_.update(toTime(now));
   if (phase_ == Phase::Simulating)
   {
-    publishFeedback(now, c);
+    if (c.outcome != ArmController::Outcome::None || last_feedback_.isZero() ||
+        (now - last_feedback_).toSec() >= options_.feedback_period - 1e-9)
+    {
+      publishFeedback(now, c);
+      last_feedback_ = now;
+    }
     switch (c.outcome)
     {
       case ArmController::Outcome::None:

@@ -5,11 +5,13 @@
 namespace vrrw_control
 {
 ArmCommandTopic::ArmCommandTopic(ros::NodeHandle& nh, ArmController& arm, ArmActionServer& server,
-                                 const RobotHardware& hardware, const ros::Time& clock_origin, bool real_mode)
+                                 const RobotHardware& hardware, const ArmActionServer::Options& options,
+                                 bool real_mode)
   : arm_(arm)
   , server_(server)
   , hw_(hardware)
-  , origin_(clock_origin)
+  , clock_(options.clock)
+  , origin_(options.clock_origin)
   , real_mode_(real_mode)
   , name_(nh.getNamespace() + "/arm_controller/command")
   , command_(nh.subscribe("arm_controller/command", 100, &ArmCommandTopic::onCommand, this,
@@ -32,7 +34,7 @@ void ArmCommandTopic::onCommand(const trajectory_msgs::JointTrajectory& msg)
     return reject("not available in real mode: send a FollowJointTrajectory goal");
   if (!hw_.ready())
     return reject(hw_.fault());
-  const ros::Time now = ros::Time::now();
+  const ros::Time now = clock_();
   if (msg.points.empty())
   {
     server_.preempt("stopped by an empty trajectory on arm_controller/command");

@@ -153,6 +153,13 @@ std::string firstViolation(const std::vector<std::string>& joints, const std::ve
     }
   return "";
 }
+/// What would let a measured arm stay within `tolerance` (the parameter and goal field of that name).
+std::string fixHint(const std::string& tolerance)
+{
+  return "; a slower time profile, a larger " + tolerance +
+         " (the controller's parameter or the goal's field) or, for a held load, its weight in the drives' "
+         "feed-forward (payload) would keep it within";
+}
 }  // namespace
 
 void ArmController::checkTolerances(double t, Cycle& cycle)
@@ -166,7 +173,8 @@ void ArmController::checkTolerances(double t, Cycle& cycle)
     if (why.empty())
       why = firstViolation(joints_, cycle.error.velocities, tol.path_velocity, "velocity error");
     if (!why.empty())
-      endGoal(Outcome::PathToleranceViolated, why + " (path tolerance)", now, cycle);
+      endGoal(Outcome::PathToleranceViolated,
+              why + " (path tolerance)" + (hw_.measures() ? fixHint("path_tolerance") : ""), now, cycle);
     return;
   }
   std::string why = firstViolation(joints_, cycle.error.positions, tol.goal_position, "position error");
@@ -176,7 +184,9 @@ void ArmController::checkTolerances(double t, Cycle& cycle)
     endGoal(Outcome::Succeeded, "", now, cycle);
   else if (t > end + tol.goal_time)
     endGoal(Outcome::GoalToleranceViolated,
-            why + " (goal tolerance) " + std::to_string(tol.goal_time) + " s after the end", now, cycle);
+            why + " (goal tolerance) " + std::to_string(tol.goal_time) + " s after the end" +
+                (hw_.measures() ? fixHint("goal_tolerance") : ""),
+            now, cycle);
 }
 
 ArmController::Cycle ArmController::update(double time)

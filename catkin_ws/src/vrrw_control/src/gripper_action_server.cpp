@@ -3,13 +3,15 @@
 namespace vrrw_control
 {
 GripperActionServer::GripperActionServer(ros::NodeHandle& nh, GripperController& gripper,
-                                         const RobotHardware& hardware, const ros::Time& clock_origin,
-                                         bool allow_stalling, int queue_size)
+                                         const RobotHardware& hardware, const ArmActionServer::Options& options,
+                                         bool allow_stalling)
   : gripper_(gripper)
   , hw_(hardware)
-  , origin_(clock_origin)
+  , clock_(options.clock)
+  , origin_(options.clock_origin)
+  , feedback_period_(options.feedback_period)
   , allow_stalling_(allow_stalling)
-  , server_(sizedActionQueues(nh, "gripper_controller/gripper_cmd", queue_size), "gripper_controller/gripper_cmd",
+  , server_(sizedActionQueues(nh, "gripper_controller/gripper_cmd", options.queue_size), "gripper_controller/gripper_cmd",
             [this](GoalHandle gh) { onGoal(gh); }, [this](GoalHandle gh) { onCancel(gh); }, false)
 {
   server_.start();
@@ -28,16 +30,17 @@ void GripperActionServer::onGoal(GoalHandle gh)
   if (has_active_)
     active_.setCanceled(control_msgs::GripperCommandResult(), "preempted by a newer goal");
   gh.setAccepted();
-  gripper_.start(goal->command.position, toTime(ros::Time::now()), goal->command.max_effort);
+  gripper_.start(goal->command.position, toTime(clock_()), goal->command.max_effort);
   active_ = gh;
   has_active_ = true;
+  last_feedback_ = ros::Time();
 }
 
 void GripperActionServer::onCancel(GoalHandle gh)
 {
   if (!has_active_ || !(gh == active_))
     return;
-  gripper_.stop(toTime(ros::Time::now()));
+  gripper_.stop(toTime(clock_()));
   active_.setCanceled(control_msgs::GripperCommandResult(), "canceled");
   has_active_ = false;
 }
@@ -56,12 +59,16 @@ void GripperActionServer::update(const ros::Time& now)
   const auto c = gripper_.update(toTime(now));
   if (!has_active_)
     return;
-  control_msgs::GripperCommandFeedback f;
-  f.position = c.position;
-  f.effort = c.effort;
-  f.stalled = c.stalled;
-  f.reached_goal = c.reached_goal;
-  active_.publishFeedback(f);
+  if (c.done || last_feedback_.isZero() || (now - last_feedback_).toSec() >= feedback_period_ - 1e-9)
+  {
+    control_msgs::GripperCommandFeedback f;
+    f.position = c.position;
+    f.effort = c.effort;
+    f.stalled = c.stalled;
+    f.reached_goal = c.reached_goal;
+    active_.publishFeedback(f);
+    last_feedback_ = now;
+  }
   if (!c.done)
     return;
   control_msgs::GripperCommandResult r;

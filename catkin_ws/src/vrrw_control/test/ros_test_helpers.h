@@ -44,6 +44,23 @@ public:
     return false;
   }
 
+  /// Waits (wall clock, bounded) for the message stamped `stamp` (the state where the simulation waits).
+  bool waitFor(const ros::Time& stamp, sensor_msgs::JointState& out, double timeout = 5.0) const
+  {
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(timeout);
+    while (ros::WallTime::now() < end)
+    {
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (auto m = log_.rbegin(); m != log_.rend(); ++m)
+          if (m->header.stamp == stamp)
+            return out = *m, true;
+      }
+      ros::WallDuration(0.002).sleep();
+    }
+    return false;
+  }
+
 private:
   void onMsg(const sensor_msgs::JointState& m)
   {
@@ -119,5 +136,70 @@ inline void expectWithinLimits(const std::vector<sensor_msgs::JointState>& run, 
             << " rad/s^2" << std::endl;
   EXPECT_LE(vmax, velocity_limit * 1.01) << what;
   EXPECT_LE(amax, acceleration_limit * 1.05) << what;
+}
+}  // namespace vrrw_control_test
+
+#include <actionlib/client/simple_action_client.h>
+#include <std_srvs/Empty.h>
+#include <vrrw_common/ros/persistent_service.h>
+#include <vrrw_physics/Step.h>
+
+namespace vrrw_control_test
+{
+/// A client of a lockstep physics node that advances simulated time itself: it pauses the simulation, acts
+/// while it waits (goals stamped at its time take effect there), then steps it.
+class Lockstep
+{
+public:
+  /// \brief `physics`: the physics node's name.
+  explicit Lockstep(const std::string& physics = "/physics") : physics_(physics) {}
+  bool waitForPhysics(double seconds = 30.0)
+  {
+    return ros::service::waitForService(physics_ + "/step", ros::Duration(seconds));  // wall clock inside
+  }
+  void pause()
+  {
+    std_srvs::Empty srv;
+    vrrw_common::services().call(physics_ + "/pause", srv);
+  }
+  /// Advances `seconds` of simulated time (or until every controller is idle); the time reached.
+  ros::Time step(double seconds, bool until_idle = false)
+  {
+    vrrw_physics::Step srv;
+    srv.request.duration = seconds;
+    srv.request.until_idle = until_idle;
+    try
+    {
+      vrrw_common::services().call(physics_ + "/step", srv, 700.0);  // paced, a step may take its duration
+    }
+    catch (const vrrw_common::ServiceError& e)
+    {
+      ADD_FAILURE() << e.what();
+    }
+    EXPECT_TRUE(srv.response.success) << srv.response.message;
+    last_idle_ = srv.response.idle;
+    return srv.response.time;
+  }
+  /// The simulated time while it waits.
+  ros::Time now() { return step(0.0); }
+  bool idle() const { return last_idle_; }
+
+private:
+  std::string physics_;
+  bool last_idle_ = true;
+};
+
+/// Waits (wall clock, bounded) until the server has taken the goal: it is then part of the simulation.
+template <class Client>
+bool waitAccepted(Client& client, double seconds = 10.0)
+{
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+  while (ros::WallTime::now() < end)
+  {
+    if (client.getState() != actionlib::SimpleClientGoalState::PENDING)
+      return true;
+    ros::WallDuration(0.002).sleep();
+  }
+  return false;
 }
 }  // namespace vrrw_control_test

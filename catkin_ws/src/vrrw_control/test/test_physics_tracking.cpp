@@ -1,7 +1,7 @@
-// Node test (rostest, real master): physics mode with vrrw_physics' physics_node. A pick motion
-// (approach, descend, dwell, lift) runs on every robot in ~robots at once and is tracked within
-// 2e-3 rad with rigid gains, measured at every joint_states sample of the physics node against the
-// interpolant at its stamp.
+// Node test (rostest, real master): physics mode, every robot's controller inside vrrw_physics'
+// physics_node in lockstep. A pick motion (approach, descend, dwell, lift) runs on every robot in ~robots at
+// once, stamped at a simulated time while the simulation waits, and is tracked within 6e-4 rad with rigid
+// gains, measured at every joint_states sample of the physics node against the interpolant at its stamp.
 #include <vrrw_trajectory/msg_conversions.h>
 #include <actionlib/client/simple_action_client.h>
 #include <algorithm>
@@ -60,28 +60,32 @@ TEST(PhysicsTracking, PickMotionWithinTwoMilliradians)
   std::vector<std::unique_ptr<Arm>> arms;
   for (const auto& n : names)
     arms.push_back(std::make_unique<Arm>(nh, n));
+  Lockstep sim;
+  ASSERT_TRUE(sim.waitForPhysics());
   for (auto& a : arms)
-  {
     ASSERT_TRUE(a->client.waitForServer(ros::Duration(30.0))) << a->name;
-    sensor_msgs::JointState s;
-    ASSERT_TRUE(a->states.waitLatest(s, 10.0)) << a->name;
-  }
-  ros::Duration(1.0).sleep();  // settle under gravity
-  const ros::Time start = ros::Time::now() + ros::Duration(0.3);
+  const ros::Time settled = sim.step(1.0);  // settle under gravity
+  const ros::Time start = settled + ros::Duration(0.3);
   for (auto& a : arms)
   {
     sensor_msgs::JointState s;
-    ASSERT_TRUE(a->states.waitLatest(s));
+    ASSERT_TRUE(a->states.waitFor(settled, s)) << a->name << ": the state where the simulation waits";
     a->goal = pick(a->name + "_", std::vector<double>(s.position.begin(), s.position.begin() + 6), pan);
     a->goal.trajectory.header.stamp = start;
     a->client.sendGoal(a->goal);
+    ASSERT_TRUE(waitAccepted(a->client)) << a->name;
   }
+  const ros::Time done = sim.step(10.0, true);
+  EXPECT_TRUE(sim.idle());
   for (auto& a : arms)
   {
-    ASSERT_TRUE(a->client.waitForResult(ros::Duration(15.0)));
+    ASSERT_TRUE(a->client.waitForResult(ros::Duration(10.0)));  // the result is on its way (wall clock)
     EXPECT_EQ(a->client.getState(), State::SUCCEEDED) << a->name << ": " << a->client.getResult()->error_string;
   }
-  ros::Duration(0.3).sleep();
+  std::cout << "goals done at " << (done - start).toSec() << " s of simulated time after their start (4.6 s long)"
+            << std::endl;
+  EXPECT_LT((done - start).toSec(), 5.6);
+  ros::WallDuration(0.3).sleep();  // the last states arrive
 
   for (auto& a : arms)
   {
@@ -113,8 +117,8 @@ TEST(PhysicsTracking, PickMotionWithinTwoMilliradians)
               << " rad, p99 " << p99 << " rad, rms " << rms << " rad (joint " << worst_joint << " at t = " << worst_t
               << " s, desired velocity " << worst_v << " rad/s)" << std::endl;
     RecordProperty(a->name + "_max_error_rad", std::to_string(max_error));
-    EXPECT_GT(n, 1000u) << a->name;
-    EXPECT_LT(max_error, 2e-3) << a->name;
+    EXPECT_GT(n, 2000u) << a->name;
+    EXPECT_LT(max_error, 6e-4) << a->name;  // measured 3.6e-4: the arm one step behind its targets
   }
 }
 
@@ -122,6 +126,10 @@ int main(int argc, char** argv)
 {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "test_physics_tracking");
+  ros::NodeHandle nh;
+  Lockstep sim;
+  if (!sim.waitForPhysics())
+    return 1;
   ros::AsyncSpinner spinner(2);
   spinner.start();
   return RUN_ALL_TESTS();

@@ -179,7 +179,8 @@ void ArticulatedRobot::clearFeedForward()
   std::fill(feed_forward_.begin(), feed_forward_.end(), 0.0);
 }
 
-std::vector<double> ArticulatedRobot::gravityTorques(const Eigen::Vector3d& gravity) const
+std::vector<double> ArticulatedRobot::gravityTorques(const Eigen::Vector3d& gravity,
+                                                     const std::vector<PointLoad>& loads) const
 {
   const int n = body_->getNumLinks();
   double mass[kMaxJoints];  // one Bullet link per movable joint: at most kMaxJoints
@@ -189,6 +190,12 @@ std::vector<double> ArticulatedRobot::gravityTorques(const Eigen::Vector3d& grav
     mass[std::size_t(k)] = body_->getLinkMass(k);
     moment[std::size_t(k)] = mass[std::size_t(k)] * bodyPose(k).translation();
   }
+  for (const PointLoad& load : loads)
+    if (load.body >= 0 && load.body < n)
+    {
+      mass[std::size_t(load.body)] += load.mass;
+      moment[std::size_t(load.body)] += load.mass * load.centre;
+    }
   for (int k = n - 1; k >= 0; --k)
   {
     const int parent = body_->getParent(k);
@@ -214,5 +221,25 @@ std::vector<double> ArticulatedRobot::gravityTorques(const Eigen::Vector3d& grav
     }
   }
   return torques;
+}
+
+int ArticulatedRobot::commonAncestor(const std::vector<int>& bodies) const
+{
+  if (bodies.empty())
+    return -1;
+  std::vector<int> chain;  // the first body and its ancestors, nearest first
+  for (int k = bodies.front(); k >= 0; k = body_->getParent(k))
+    chain.push_back(k);
+  std::size_t deepest = 0;  // index in chain of the common ancestor so far
+  for (const int b : bodies)
+  {
+    int k = b;
+    while (k >= 0 && std::find(chain.begin() + long(deepest), chain.end(), k) == chain.end())
+      k = body_->getParent(k);
+    if (k < 0)
+      return -1;
+    deepest = std::size_t(std::find(chain.begin(), chain.end(), k) - chain.begin());
+  }
+  return chain[deepest];
 }
 }  // namespace vrrw_physics

@@ -163,7 +163,8 @@ void PhysicsWorld::applyJointTorques()
     const JointMatrix& inertia = e.robot->updateDynamics();
     e.robot->followMasters();
     e.robot->clearFeedForward();
-    std::vector<double> external = e.robot->gravityTorques(options_.gravity);
+    std::vector<double> external =
+        e.robot->gravityTorques(options_.gravity, options_.payload_compensation ? e.held : std::vector<PointLoad>());
     if (e.gravity_compensation)
       for (std::size_t j = 0; j < external.size(); ++j)
       {
@@ -201,6 +202,7 @@ bool PhysicsWorld::step()
   world_->stepSimulation(btScalar(options_.dt), 0, btScalar(options_.dt));
   for (RobotEntry& e : robots_)
     e.robot->refreshFrames();
+  findHeldObjects();
   time_ += options_.dt;
   ++steps_;
   const std::string why = insaneState();
@@ -284,6 +286,18 @@ void PhysicsWorld::setDriveTargets(const std::string& robot, const std::vector<s
   entry(robot).drives->setTargets(joints, positions, velocities, efforts, time_);
 }
 
+void PhysicsWorld::setDriveTargetsByIndex(const std::string& robot, const std::vector<std::size_t>& drives,
+                                   const std::vector<double>& positions, const std::vector<double>& velocities,
+                                   const std::vector<double>& efforts)
+{
+  entry(robot).drives->setTargetsByIndex(drives, positions, velocities, efforts, time_);
+}
+
+std::vector<std::size_t> PhysicsWorld::drives(const std::string& robot, const std::vector<std::string>& joints) const
+{
+  return entry(robot).drives->drives(joints);
+}
+
 void PhysicsWorld::setMode(const std::string& robot, DriveMode mode)
 {
   entry(robot).drives->setMode(mode);
@@ -309,6 +323,11 @@ DriveGains PhysicsWorld::gains(const std::string& robot, const std::string& join
 void PhysicsWorld::setGravityCompensation(const std::string& robot, bool on)
 {
   entry(robot).gravity_compensation = on;
+}
+
+std::vector<std::string> PhysicsWorld::heldObjects(const std::string& robot) const
+{
+  return entry(robot).held_objects;
 }
 
 std::vector<std::string> PhysicsWorld::objectNames() const

@@ -57,39 +57,48 @@ std::size_t RobotDrives::drive(const std::string& joint, const std::string& what
   return std::size_t(sim.drive);
 }
 
+std::vector<std::size_t> RobotDrives::drives(const std::vector<std::string>& joints) const
+{
+  std::vector<std::size_t> out;
+  std::set<std::string> named;
+  for (const std::string& joint : joints)
+  {
+    out.push_back(drive(joint, "drive target: joint"));
+    if (!named.insert(joint).second)
+      throw InputError("drive target: joint '" + joint + "': named twice");
+  }
+  return out;
+}
+
 void RobotDrives::setTargets(const std::vector<std::string>& joints, const std::vector<double>& positions,
                              const std::vector<double>& velocities, const std::vector<double>& efforts, double now)
 {
   const std::string what = "drive targets for " + name_;
   requireSameLength(joints.size(), positions.size(), what, "positions");
+  setTargetsByIndex(drives(joints), positions, velocities, efforts, now);
+}
+
+void RobotDrives::setTargetsByIndex(const std::vector<std::size_t>& drives, const std::vector<double>& positions,
+                             const std::vector<double>& velocities, const std::vector<double>& efforts, double now)
+{
+  const std::string what = "drive targets for " + name_;
+  requireSameLength(drives.size(), positions.size(), what, "positions");
   if (!velocities.empty())
-    requireSameLength(joints.size(), velocities.size(), what, "velocities");
+    requireSameLength(drives.size(), velocities.size(), what, "velocities");
   if (!efforts.empty())
-    requireSameLength(joints.size(), efforts.size(), what, "efforts");
-  std::vector<std::size_t> drives;
-  std::set<std::string> named;
-  for (std::size_t i = 0; i < joints.size(); ++i)
+    requireSameLength(drives.size(), efforts.size(), what, "efforts");
+  for (std::size_t i = 0; i < drives.size(); ++i)
   {
-    const std::string joint = "drive target: joint '" + joints[i] + "'";
-    drives.push_back(drive(joints[i], "drive target: joint"));
-    if (!named.insert(joints[i]).second)
-      throw InputError(joint + ": named twice");
-    const SimJoint& sim = robot_.joints()[joint_of_drive_[drives.back()]];
-    const std::string unit = sim.prismatic ? "m" : "rad";
-    if (!std::isfinite(positions[i]))
-      throw InputError(joint + ": position is not finite");
-    if (sim.limited)
-    {
-      const double margin = kJointLimitMargin * (sim.upper - sim.lower);
-      requireInRange(positions[i], sim.lower - margin, sim.upper + margin, joint + " position",
-                     unit + " (the joint limits and 5 % of the range)");
-    }
-    if (!velocities.empty())
-      requireInRange(velocities[i], -max_speed_, max_speed_, joint + " velocity", unit + "/s (the guard's limit)");
-    if (!efforts.empty())
-      requireInRange(efforts[i], 0.0, kMaxDriveForce, joint + " effort", sim.prismatic ? "N" : "N m");
+    const SimJoint& sim = robot_.joints()[joint_of_drive_.at(drives[i])];
+    const bool bad = !std::isfinite(positions[i]) ||
+                     (sim.limited && (positions[i] < sim.lower - kJointLimitMargin * (sim.upper - sim.lower) ||
+                                      positions[i] > sim.upper + kJointLimitMargin * (sim.upper - sim.lower))) ||
+                     (!velocities.empty() && !(std::abs(velocities[i]) <= max_speed_)) ||
+                     (!efforts.empty() && !(efforts[i] >= 0.0 && efforts[i] <= kMaxDriveForce));
+    if (bad)
+      checkTarget(sim, positions[i], velocities.empty() ? 0.0 : velocities[i], efforts.empty() ? 0.0 : efforts[i]);
   }
-  for (std::size_t i = 0; i < joints.size(); ++i)
+  for (std::size_t i = 0; i < drives.size(); ++i)
   {
     JointDrive& d = *robot_.drives()[drives[i]];
     const double velocity = velocities.empty() ? 0.0 : velocities[i];
@@ -100,6 +109,22 @@ void RobotDrives::setTargets(const std::vector<std::string>& joints, const std::
   }
   last_targets_ = now;
   streaming_ = true;
+}
+
+void RobotDrives::checkTarget(const SimJoint& sim, double position, double velocity, double effort) const
+{
+  const std::string joint = "drive target: joint '" + sim.name + "'";
+  const std::string unit = sim.prismatic ? "m" : "rad";
+  if (!std::isfinite(position))
+    throw InputError(joint + ": position is not finite");
+  if (sim.limited)
+  {
+    const double margin = kJointLimitMargin * (sim.upper - sim.lower);
+    requireInRange(position, sim.lower - margin, sim.upper + margin, joint + " position",
+                   unit + " (the joint limits and 5 % of the range)");
+  }
+  requireInRange(velocity, -max_speed_, max_speed_, joint + " velocity", unit + "/s (the guard's limit)");
+  requireInRange(effort, 0.0, kMaxDriveForce, joint + " effort", sim.prismatic ? "N" : "N m");
 }
 
 bool RobotDrives::holdIfStale(double now, double timeout)

@@ -1,6 +1,6 @@
-// Node test against a real master: joint states per robot and combined, objects on tf, contacts, drive
-// targets move the arm and hold when they stop, bad input gets a rate-limited error on ~errors and the node
-// keeps running, hands, pause / step / resume / reset.
+// Node test against a real master, without controllers: joint states per robot and combined, objects on tf,
+// contacts, bad input gets a rate-limited error on ~errors and the node keeps running, hands, stamped input
+// taking effect at its stamp, pause / unpause / step / reset, /clock.
 #include <vrrw_physics/Contacts.h>
 #include <vrrw_physics/Hand.h>
 #include <vrrw_physics/SetGains.h>
@@ -16,7 +16,9 @@
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/String.h>
+#include <std_srvs/Empty.h>
 #include <std_srvs/Trigger.h>
+#include <vrrw_physics/Step.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -81,6 +83,22 @@ bool trigger(const std::string& service)
   std_srvs::Trigger srv;
   return vrrw_common::services().tryCall(service, srv) && srv.response.success;
 }
+
+bool empty(const std::string& service)
+{
+  std_srvs::Empty srv;
+  return vrrw_common::services().tryCall(service, srv);
+}
+
+/// /physics/step over one persistent connection.
+vrrw_physics::Step::Response step(double duration, bool until_idle = false)
+{
+  vrrw_physics::Step srv;
+  srv.request.duration = duration;
+  srv.request.until_idle = until_idle;
+  EXPECT_TRUE(vrrw_common::services().tryCall("/physics/step", srv));
+  return srv.response;
+}
 }  // namespace
 
 TEST(PhysicsNode, PublishesJointStatesAndObjectFrames)
@@ -99,37 +117,24 @@ TEST(PhysicsNode, PublishesJointStatesAndObjectFrames)
   EXPECT_TRUE(buffer.canTransform("world", "drill", ros::Time(0), ros::Duration(5.0)));
 }
 
-TEST(PhysicsNode, DriveTargetsMoveTheArm)
-{
-  Listener l;
-  ros::NodeHandle nh;
-  ros::Publisher targets = nh.advertise<sensor_msgs::JointState>("/ur5e/drive_targets", 1, true);
-  ASSERT_TRUE(l.waitFor([&] { return targets.getNumSubscribers() > 0 && l.count > 0; }, 10.0));
-  sensor_msgs::JointState goal;
-  goal.name = { "ur5e_shoulder_pan_joint" };
-  goal.position = { 0.3 };
-  goal.velocity = { 0.0 };
-  targets.publish(goal);
-  EXPECT_TRUE(l.waitFor([&] { return l.position("ur5e_shoulder_pan_joint") > 0.25; }, 10.0))
-      << "pan at " << l.position("ur5e_shoulder_pan_joint");
-  ASSERT_TRUE(trigger("/physics/reset"));
-  EXPECT_TRUE(l.waitFor([&] { return std::abs(l.position("ur5e_shoulder_pan_joint")) < 0.01; }, 5.0));
-}
-
 TEST(PhysicsNode, BadInputIsReportedAndTheNodeKeepsRunning)
 {
   Listener l;
   ros::NodeHandle nh;
-  ros::Publisher targets = nh.advertise<sensor_msgs::JointState>("/ur5e/drive_targets", 10);
-  ASSERT_TRUE(l.waitFor([&] { return targets.getNumSubscribers() > 0 && l.count > 0; }, 10.0));
-  sensor_msgs::JointState bad;
-  bad.name = { "ur5e_elbow_joint", "ur5e_no_such_joint" };
-  bad.position = { 1.0, 0.0 };
-  targets.publish(bad);
-  bad.name = { "ur5e_elbow_joint" };
-  bad.position = { std::numeric_limits<double>::quiet_NaN() };
-  targets.publish(bad);
-  EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("ur5e_no_such_joint") && l.errorMentions("not finite"); }, 5.0));
+  ros::Publisher hands = nh.advertise<vrrw_physics::Hand>("/physics/hand", 10);
+  ASSERT_TRUE(l.waitFor([&] { return hands.getNumSubscribers() > 0 && l.count > 0; }, 10.0));
+  vrrw_physics::Hand bad;
+  bad.id = "nan";
+  bad.radius = 0.05;
+  bad.pose.position.x = std::numeric_limits<double>::quiet_NaN();
+  bad.pose.orientation.w = 1.0;
+  hands.publish(bad);
+  bad.id = "zero";
+  bad.pose.position.x = 0.0;
+  bad.pose.orientation.w = 0.0;
+  hands.publish(bad);
+  EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("hand 'nan'") && l.errorMentions("quaternion is zero"); }, 5.0))
+      << (l.errors.empty() ? "no errors" : l.errors.back());
 
   vrrw_physics::SetGains gains;
   gains.request.robot = "ur5e";
@@ -158,21 +163,58 @@ TEST(PhysicsNode, BadInputIsReportedAndTheNodeKeepsRunning)
   EXPECT_NEAR(l.position("ur5e_elbow_joint"), 1.5708, 1e-3);  // the rejected targets were not applied
 }
 
-TEST(PhysicsNode, PauseStepResume)
+TEST(PhysicsNode, PauseUnpauseAndStep)
 {
   Listener l;
   ASSERT_TRUE(l.waitFor([&] { return l.count > 0; }, 10.0));
-  ASSERT_TRUE(trigger("/physics/pause"));
-  ros::WallDuration(0.2).sleep();
-  ros::spinOnce();
+  const auto running = step(0.1);
+  EXPECT_FALSE(running.success);
+  EXPECT_EQ(running.message, "the simulation runs: pause it first (/physics/pause)");
+  ASSERT_TRUE(empty("/physics/pause"));
+  ASSERT_TRUE(empty("/physics/pause"));  // twice: answered, still paused
+  const auto at = step(0.0);
+  ASSERT_TRUE(at.success) << at.message;
+  EXPECT_EQ(at.steps, 0u);
+  l.waitFor([] { return false; }, 0.3);
   const int paused_at = l.count;
-  ros::WallDuration(0.3).sleep();
-  ros::spinOnce();
+  l.waitFor([] { return false; }, 0.3);
   EXPECT_EQ(l.count, paused_at);
-  ASSERT_TRUE(trigger("/physics/step"));
-  EXPECT_TRUE(l.waitFor([&] { return l.count == paused_at + 1; }, 2.0));
-  ASSERT_TRUE(trigger("/physics/resume"));
+  EXPECT_EQ(step(0.0).time, at.time);  // nothing moved while paused
+  const auto stepped = step(0.1);
+  ASSERT_TRUE(stepped.success) << stepped.message;
+  EXPECT_EQ(stepped.steps, 100u);
+  EXPECT_NEAR((stepped.time - at.time).toSec(), 0.1, 1e-6);
+  EXPECT_TRUE(stepped.idle);  // no controllers here
+  EXPECT_TRUE(l.waitFor([&] { return l.last.header.stamp == stepped.time; }, 2.0));  // the state at the stop
+  EXPECT_FALSE(step(-1.0).success);
+  EXPECT_EQ(step(1e9).message, "duration: 1000000000.000000 outside [0, 600] s");
+  ASSERT_TRUE(empty("/physics/unpause"));
+  ASSERT_TRUE(empty("/physics/unpause"));  // without pause: answered, still running
   EXPECT_TRUE(l.waitFor([&] { return l.count > paused_at + 10; }, 5.0));
+}
+
+TEST(PhysicsNode, StampedInputTakesEffectAtItsStamp)
+{
+  Listener l;
+  ros::NodeHandle nh;
+  ros::Publisher hands = nh.advertise<vrrw_physics::Hand>("/physics/hand", 10);
+  ASSERT_TRUE(l.waitFor([&] { return hands.getNumSubscribers() > 0 && l.count > 0; }, 10.0));
+  ASSERT_TRUE(empty("/physics/pause"));
+  const ros::Time now = step(0.0).time;
+  vrrw_physics::Hand hand;
+  hand.header.stamp = now + ros::Duration(1.0);  // appears 1 s from now, removed 0.5 s after that
+  hand.id = "stamped";
+  hand.pose.position.z = 2.0;
+  hand.pose.orientation.w = 1.0;
+  hand.radius = 0.05;
+  hands.publish(hand);
+  l.waitFor([] { return false; }, 0.5);  // it arrives while the simulation waits
+  ASSERT_TRUE(step(1.45).success);
+  l.waitFor([] { return false; }, 0.3);
+  EXPECT_FALSE(l.errorMentions("hand 'stamped': no pose for"));
+  ASSERT_TRUE(step(0.1).success);
+  EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("hand 'stamped': no pose for"); }, 2.0));
+  ASSERT_TRUE(empty("/physics/unpause"));
 }
 
 TEST(PhysicsNode, CompliantArmFollowsAnOperatorSpring)
@@ -250,8 +292,8 @@ TEST(PhysicsNode, WildInputIsRefusedAndRepeatedErrorsAreRateLimited)
 {
   Listener l;
   ros::NodeHandle nh;
-  ros::Publisher targets = nh.advertise<sensor_msgs::JointState>("/ur5e/drive_targets", 1000);
-  ASSERT_TRUE(l.waitFor([&] { return targets.getNumSubscribers() > 0 && l.count > 0; }, 10.0));
+  ros::Publisher hands = nh.advertise<vrrw_physics::Hand>("/physics/hand", 1000);
+  ASSERT_TRUE(l.waitFor([&] { return hands.getNumSubscribers() > 0 && l.count > 0; }, 10.0));
   vrrw_physics::SetSpring spring;  // the probe that froze the node before: stiffness and max_force 1e12
   spring.request.id = "hand";
   spring.request.body = "ur5e_wrist_3_link";
@@ -273,48 +315,22 @@ TEST(PhysicsNode, WildInputIsRefusedAndRepeatedErrorsAreRateLimited)
   pose.request.pose.position.x = 0.0;
   ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_object_pose", pose));
   EXPECT_NE(pose.response.message.find("fixed"), std::string::npos) << pose.response.message;
-  // 300 bad targets in 0.3 s: one error line, then at most one a second that counts the rest.
-  sensor_msgs::JointState bad;
-  bad.name = { "ur5e_no_such_joint" };
-  bad.position = { 0.0 };
+  // 300 bad hands in 0.3 s: one error line, then at most one a second that counts the rest.
+  vrrw_physics::Hand bad;
+  bad.id = "huge";
+  bad.pose.orientation.w = 1.0;
+  bad.radius = 3.0;
   ros::spinOnce();
-  const int before = l.errorsMentioning("ur5e_no_such_joint");
+  const int before = l.errorsMentioning("hand 'huge' radius");
   for (int i = 0; i < 300; ++i)
   {
-    targets.publish(bad);
+    hands.publish(bad);
     ros::WallDuration(0.001).sleep();
   }
   l.waitFor([] { return false; }, 1.5);
-  const int lines = l.errorsMentioning("ur5e_no_such_joint") - before;
+  const int lines = l.errorsMentioning("hand 'huge' radius") - before;
   EXPECT_GE(lines, 1);
   EXPECT_LE(lines, 3);
-}
-
-TEST(PhysicsNode, TargetsThatStopArrivingHoldTheLastTarget)
-{
-  Listener l;
-  ros::NodeHandle nh;
-  ros::Publisher targets = nh.advertise<sensor_msgs::JointState>("/ur5e/drive_targets", 10);
-  ASSERT_TRUE(l.waitFor([&] { return targets.getNumSubscribers() > 0 && l.count > 0; }, 10.0));
-  ASSERT_TRUE(trigger("/physics/reset"));
-  // A controller streams a ramp at 0.25 rad/s (with an effort limit) for 0.3 s, then dies.
-  sensor_msgs::JointState ramp;
-  ramp.name = { "ur5e_shoulder_pan_joint" };
-  ramp.velocity = { 0.25 };
-  ramp.effort = { 100.0 };
-  const ros::WallTime start = ros::WallTime::now();
-  double last = 0.0;
-  while ((ros::WallTime::now() - start).toSec() < 0.3)
-  {
-    last = 0.25 * (ros::WallTime::now() - start).toSec();
-    ramp.position = { last };
-    targets.publish(ramp);
-    ros::WallDuration(0.01).sleep();
-  }
-  EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("ur5e: no drive targets for 0.1 s"); }, 5.0));
-  EXPECT_TRUE(l.waitFor([&] { return std::abs(l.position("ur5e_shoulder_pan_joint") - last) < 5e-3; }, 10.0))
-      << "pan at " << l.position("ur5e_shoulder_pan_joint") << ", last target " << last;
-  ASSERT_TRUE(trigger("/physics/reset"));
 }
 
 TEST(PhysicsNode, PublishesSimulatedTimeOnClock)
@@ -327,7 +343,7 @@ TEST(PhysicsNode, PublishesSimulatedTimeOnClock)
   });
   ASSERT_TRUE(l.waitFor([&] { return ticks.size() > 20 && l.count > 0; }, 10.0));
   EXPECT_GT(ticks.back(), ticks.front());
-  EXPECT_NEAR(ticks[1] - ticks[0], 0.001, 1e-6);  // one message per 1 ms step
+  EXPECT_NEAR(ticks[1] - ticks[0], 0.01, 1e-6);  // ~clock_rate 100 Hz of simulated time
   EXPECT_LT(l.last.header.stamp.toSec(), 1e6);     // joint states carry simulated time
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using vrrw_physics::RealtimePacer;
 
 TEST(RealtimePacer, WaitsUntilTheWallClockCatchesUpAndRestartsWhenFarBehind)
@@ -14,4 +16,35 @@ TEST(RealtimePacer, WaitsUntilTheWallClockCatchesUpAndRestartsWhenFarBehind)
   EXPECT_EQ(pacer.wait(5.020, t0 + milliseconds(50)), 0.0);           // behind by 30 ms: no wait, no catch-up
   EXPECT_EQ(pacer.wait(5.021, t0 + milliseconds(500)), 0.0);          // behind by 479 ms: a new reference
   EXPECT_NEAR(pacer.wait(5.031, t0 + milliseconds(500)), 0.010, 1e-9);  // paced from there, not racing
+}
+
+TEST(RealtimePacer, RunsAtItsRealTimeFactorOrNeverWaitsAtMax)
+{
+  using std::chrono::milliseconds;
+  const RealtimePacer::Clock::time_point t0{};
+  RealtimePacer ten(0.1, 10.0);
+  ten.restart(0.0, t0);
+  EXPECT_NEAR(ten.wait(0.1, t0 + milliseconds(4)), 0.006, 1e-9);  // 0.1 simulated s take 10 ms
+  RealtimePacer max(0.1, vrrw_physics::parseRealTimeFactor("max", "--rtf"));
+  max.restart(0.0, t0);
+  EXPECT_EQ(max.wait(100.0, t0), 0.0);
+}
+
+TEST(RealtimePacer, RealTimeFactorsAreMaxOrPositiveNumbers)
+{
+  EXPECT_TRUE(std::isinf(vrrw_physics::parseRealTimeFactor("max", "--rtf")));
+  EXPECT_EQ(vrrw_physics::parseRealTimeFactor("2.5", "--rtf"), 2.5);
+  for (const char* bad : { "0", "-1", "nan", "inf", "fast", "", "2x" })
+  {
+    try
+    {
+      vrrw_physics::parseRealTimeFactor(bad, "~rtf");
+      ADD_FAILURE() << bad << " accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_EQ(std::string(e.what()),
+                std::string("~rtf: '") + bad + "' is not max or a positive number (the real-time factor)");
+    }
+  }
 }

@@ -1,6 +1,7 @@
 #pragma once
 #include <actionlib/server/action_server.h>
 #include <control_msgs/FollowJointTrajectoryAction.h>
+#include <functional>
 #include <memory>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
@@ -22,9 +23,12 @@ public:
   struct Options
   {
     Tolerances defaults;            ///< used where a goal leaves a tolerance at 0
+    /// \brief The controllers' time now (ros::Time::now, or the simulation's between its steps).
+    std::function<ros::Time()> clock = [] { return ros::Time::now(); };
     ros::Time clock_origin;         ///< maps to controller time 0 (keeps doubles small and exact)
     double confirm_timeout = 120.0;  ///< real mode: s to wait for the confirmation
     int queue_size = 10000;          ///< goals (and results) actionlib may queue: a burst's size
+    double feedback_period = 0.0;    ///< s between feedback messages of a goal; 0: every control cycle
   };
 
   /// \brief `relay` non-null selects real mode. `real` (optional, real mode) measures the real arm:
@@ -44,6 +48,8 @@ public:
   void setFreeDrive(bool active, const ros::Time& now);
   /// \brief Ends a goal running in simulation as preempted, because `why` commands the arm now.
   void preempt(const std::string& why);
+  /// \brief true while a goal runs, awaits its confirmation or executes on the real robot.
+  bool active() const { return phase_ != Phase::Idle; }
 
 private:
   enum class Phase { Idle, Simulating, AwaitingConfirmation, Relaying };
@@ -71,6 +77,7 @@ private:
   GoalHandle active_;
   Phase phase_ = Phase::Idle;
   ros::Time confirm_deadline_;
+  ros::Time last_feedback_;  ///< of the active goal
   double goal_start_ = 0.0;  ///< controller time the active goal's motion starts
   std::string name_;
   bool suspended_ = true;  ///< no state yet, or the states stopped

@@ -14,8 +14,9 @@ namespace vrrw_control
 class ArmCommandTopic
 {
 public:
+  /// \brief `options`: the arm server's clock and origin.
   ArmCommandTopic(ros::NodeHandle& nh, ArmController& arm, ArmActionServer& server, const RobotHardware& hardware,
-                  const ros::Time& clock_origin, bool real_mode);
+                  const ArmActionServer::Options& options, bool real_mode);
 
 private:
   void onCommand(const trajectory_msgs::JointTrajectory& msg);
@@ -25,6 +26,7 @@ private:
   ArmController& arm_;
   ArmActionServer& server_;
   const RobotHardware& hw_;
+  std::function<ros::Time()> clock_;
   ros::Time origin_;
   bool real_mode_;
   std::string name_;

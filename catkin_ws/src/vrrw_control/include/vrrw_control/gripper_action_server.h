@@ -16,9 +16,12 @@ public:
   using Action = control_msgs::GripperCommandAction;
   using GoalHandle = actionlib::ServerGoalHandle<Action>;
 
+  /// \brief `options`: the arm server's clock, origin, queue size and feedback period.
   GripperActionServer(ros::NodeHandle& nh, GripperController& gripper, const RobotHardware& hardware,
-                      const ros::Time& clock_origin, bool allow_stalling, int queue_size);
+                      const ArmActionServer::Options& options, bool allow_stalling);
   void update(const ros::Time& now);
+  /// \brief true while a goal runs.
+  bool active() const { return has_active_; }
   /// \brief The hardware lost its state (`why`): aborts a running goal.
   void suspend(const std::string& why);
 
@@ -29,7 +32,10 @@ private:
 
   GripperController& gripper_;
   const RobotHardware& hw_;
+  std::function<ros::Time()> clock_;
   ros::Time origin_;
+  double feedback_period_;
+  ros::Time last_feedback_;  ///< of the active goal
   bool allow_stalling_;
   actionlib::ActionServer<Action> server_;
   GoalHandle active_;

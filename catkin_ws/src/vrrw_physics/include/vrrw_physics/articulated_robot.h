@@ -47,6 +47,14 @@ struct SimJoint
   double offset = 0.0;
 };
 
+/// \brief A point mass carried by a Bullet link of a robot (an object it holds), for gravityTorques().
+struct PointLoad
+{
+  int body = -1;  ///< Bullet link index; -1 (the fixed base) loads no joint
+  double mass = 0.0;  ///< kg
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< world position of its centre of mass
+};
+
 /// \brief One robot as a single Featherstone btMultiBody built from a URDF subtree.
 ///
 /// Links joined by fixed joints are merged (mass, inertia, collision shapes); every movable joint
@@ -107,8 +115,11 @@ public:
   void applyWrench(const std::string& link, const Eigen::Vector3d& point, const Eigen::Vector3d& force,
                    const Eigen::Vector3d& torque);
 
-  /// \brief Generalized gravity force on each joint (order of joints()) in the current configuration.
-  std::vector<double> gravityTorques(const Eigen::Vector3d& gravity) const;
+  /// \brief Generalized gravity force on each joint (order of joints()) in the current configuration, of the
+  /// robot's links and of `loads` it carries.
+  std::vector<double> gravityTorques(const Eigen::Vector3d& gravity, const std::vector<PointLoad>& loads = {}) const;
+  /// \brief The Bullet link nearest the base that is an ancestor of (or is) every link of `bodies` (-1: the base).
+  int commonAncestor(const std::vector<int>& bodies) const;
   /// \brief Joint torques added for this step so far (feed-forward, drives applied as torques).
   const std::vector<double>& appliedTorques() const { return feed_forward_; }
   /// \brief Adds a joint torque for this step (reported by efforts()).

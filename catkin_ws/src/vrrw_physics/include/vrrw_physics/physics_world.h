@@ -49,6 +49,7 @@ struct WorldOptions
                                      ///< while a robot link touches something (1 otherwise)
   double solver_residual = 1e-9;     ///< stop sweeping when the squared impulse change falls below
   bool gravity_compensation = true;  ///< feed-forward torques cancelling gravity on each robot
+  bool payload_compensation = true;  ///< with it, also the weight of what a robot holds (heldObjects())
   bool bullet_reference = false;     ///< true: stock Bullet (btMultiBodyDynamicsWorld and
                                      ///< btMultiBodyConstraintSolver, no broadphase filter), the reference
                                      ///< the default's MultiBodyWorld, JointRowSolver and SelfCollisionFilter
@@ -135,6 +136,12 @@ public:
   void setDriveTargets(const std::string& robot, const std::vector<std::string>& joints,
                        const std::vector<double>& positions, const std::vector<double>& velocities,
                        const std::vector<double>& efforts = {});
+  /// \brief The same by drive index (drives()): a controller's targets every step. Throws InputError.
+  void setDriveTargetsByIndex(const std::string& robot, const std::vector<std::size_t>& drives,
+                       const std::vector<double>& positions, const std::vector<double>& velocities,
+                       const std::vector<double>& efforts);
+  /// \brief The drive index of each joint of a robot (RobotDrives::drives). Throws InputError.
+  std::vector<std::size_t> drives(const std::string& robot, const std::vector<std::string>& joints) const;
   /// \brief Mode of the robot's arm joints; the arm holds where it is. Throws InputError.
   void setMode(const std::string& robot, DriveMode mode);
   DriveMode mode(const std::string& robot) const;
@@ -144,6 +151,10 @@ public:
   /// \brief Gains in effect for a joint. Throws InputError.
   DriveGains gains(const std::string& robot, const std::string& joint) const;
   void setGravityCompensation(const std::string& robot, bool on);
+  /// \brief Objects the robot held between its fingers at the last step: touching two or more of its links and
+  /// nothing else. Their weight joins the robot's gravity feed-forward (payload compensation, as a real arm
+  /// holds its configured payload), at their centre of mass on the link that carries the fingers.
+  std::vector<std::string> heldObjects(const std::string& robot) const;
 
   std::vector<std::string> objectNames() const;
   Eigen::Isometry3d objectPose(const std::string& object) const;
@@ -177,6 +188,8 @@ private:
     std::unique_ptr<StablePd> stable_pd;
     std::unique_ptr<RobotDrives> drives;
     bool gravity_compensation = true;
+    std::vector<PointLoad> held;             ///< objects held at the last step, as loads
+    std::vector<std::string> held_objects;  ///< their names
   };
 
   void createBulletWorld();
@@ -185,6 +198,8 @@ private:
   void addFloor();
   void checkExtent() const;
   void applyJointTorques();
+  /// Finds what each robot holds after a step (held_loads.cpp).
+  void findHeldObjects();
   RobotEntry& entry(const std::string& robot);
   const RobotEntry& entry(const std::string& robot) const;
   RigidObject& object(const std::string& name) const;

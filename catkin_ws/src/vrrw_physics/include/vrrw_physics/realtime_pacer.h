@@ -1,27 +1,36 @@
 #pragma once
 #include <chrono>
+#include <string>
 
 namespace vrrw_physics
 {
-/// \brief Keeps simulated time in step with the wall clock: after each step, how long to wait.
+/// \brief Keeps simulated time at a real-time factor of the wall clock: after each step, how long to wait.
 ///
-/// A step that falls behind by more than `max_lag` starts a new reference instead of racing to catch up
-/// (a paused debugger or a loaded machine must not be followed by a burst of fast steps).
+/// rtf 1 paces at real time (a person in the loop), rtf N runs N simulated seconds per wall second, an
+/// infinite rtf ("max") never waits. A step that falls behind by more than `max_lag` (wall seconds) starts a
+/// new reference instead of racing to catch up (a paused debugger or a loaded machine must not be followed by
+/// a burst of fast steps).
 class RealtimePacer
 {
 public:
   using Clock = std::chrono::steady_clock;
 
-  explicit RealtimePacer(double max_lag = 0.1) : max_lag_(max_lag) {}
+  explicit RealtimePacer(double max_lag = 0.1, double rtf = 1.0) : max_lag_(max_lag), rtf_(rtf) {}
 
   /// \brief Starts pacing from simulated time `sim_time` now (after a pause, too).
   void restart(double sim_time, Clock::time_point now = Clock::now());
-  /// \brief Seconds to sleep before the step that follows `sim_time` (0 when late).
+  /// \brief Wall seconds to wait before the step that follows `sim_time` (0 when late).
   double wait(double sim_time, Clock::time_point now = Clock::now());
+  double rtf() const { return rtf_; }
 
 private:
   double max_lag_;
+  double rtf_;
   Clock::time_point start_ = Clock::now();
   double started_at_ = 0.0;
 };
+
+/// \brief A real-time factor from text: "max" (infinity) or a positive finite number. Throws
+/// std::invalid_argument "<what>: '<text>' is not max or a positive number".
+double parseRealTimeFactor(const std::string& text, const std::string& what);
 }  // namespace vrrw_physics

@@ -9,6 +9,7 @@
 namespace vrrw_physics
 {
 class ArticulatedRobot;
+struct SimJoint;
 
 /// \brief The joint drives of one robot as they are commanded: the mode and its gains from the robot's
 /// config (gripper joints keep their rigid gains in every mode), custom gains, targets with a force limit,
@@ -31,6 +32,13 @@ public:
   /// next targets for that joint. Throws InputError naming the joint and the range; nothing is applied then.
   void setTargets(const std::vector<std::string>& joints, const std::vector<double>& positions,
                   const std::vector<double>& velocities, const std::vector<double>& efforts, double now);
+  /// \brief The same for drives named by index (drives()), as a controller in the stepping thread sets them
+  /// every step without looking names up. Throws InputError naming the joint and the range.
+  void setTargetsByIndex(const std::vector<std::size_t>& drives, const std::vector<double>& positions,
+                  const std::vector<double>& velocities, const std::vector<double>& efforts, double now);
+  /// \brief The drive of each joint (prefixed names of driven joints). Throws InputError naming a joint that is
+  /// unknown, a mimic joint or named twice.
+  std::vector<std::size_t> drives(const std::vector<std::string>& joints) const;
   /// \brief After `timeout` s without targets (0: never) every target velocity becomes 0 and every target
   /// position stays: the robot comes to rest at its last commanded pose. A stale velocity means nothing without
   /// the targets that should follow it, while a position target is a whole command (a script's one-shot target
@@ -58,6 +66,8 @@ public:
 private:
   /// Index in robot.drives() of a driven joint; throws InputError naming `what` otherwise.
   std::size_t drive(const std::string& joint, const std::string& what) const;
+  /// Throws InputError naming the joint, the value and its range (a target found out of range).
+  void checkTarget(const SimJoint& sim, double position, double velocity, double effort) const;
   void applyMode();
   void holdArm();
 

@@ -1,6 +1,5 @@
-#include "robot_description.h"
-
 #include <urdf_parser/urdf_parser.h>
+#include <vrrw_control/robot_description.h>
 #include <vrrw_scene/robot_config.h>
 #include <vrrw_scene/scene_loader.h>
 
@@ -8,12 +7,11 @@ namespace vrrw_control
 {
 namespace
 {
-RobotDescription fromScene(const std::string& scene_name, const std::string& name)
+RobotDescription fromScene(const vrrw_scene::Scene& scene, const std::string& name)
 {
-  const auto scene = vrrw_scene::loadScene(scene_name);
   const auto* robot = scene.robot(name);
   if (!robot)
-    throw std::runtime_error("~scene " + scene_name + ": robot " + name + ": not in the scene");
+    throw std::runtime_error("scene " + scene.name + ": robot " + name + ": not in the scene");
   return { scene.urdf, robot->arm_joints, robot->gripper_joints.empty() ? "" : robot->gripper_joints.front(),
            robot->initial_positions, robot->acceleration_limits, robot->fingertip_lever_arm,
            robot->max_grip_force };
@@ -38,17 +36,28 @@ RobotDescription fromParameters(ros::NodeHandle& nh, ros::NodeHandle& pnh, const
   pnh.getParam("max_grip_force", d.max_grip_force);
   return d;
 }
-}  // namespace
 
-RobotDescription describeRobot(ros::NodeHandle& nh, ros::NodeHandle& pnh, const std::string& name)
+RobotDescription withOverrides(RobotDescription d, ros::NodeHandle& pnh)
 {
-  std::string scene_name;
-  RobotDescription d = pnh.getParam("scene", scene_name) ? fromScene(scene_name, name) : fromParameters(nh, pnh, name);
   pnh.getParam("gripper_joint", d.gripper_joint);
   std::vector<double> initial;
   if (pnh.getParam("initial_positions", initial))
     for (size_t j = 0; j < initial.size() && j < d.arm_joints.size(); ++j)
       d.initial[d.arm_joints[j]] = initial[j];
   return d;
+}
+}  // namespace
+
+RobotDescription describeRobot(const vrrw_scene::Scene& scene, const std::string& name, ros::NodeHandle& pnh)
+{
+  return withOverrides(fromScene(scene, name), pnh);
+}
+
+RobotDescription describeRobot(ros::NodeHandle& nh, ros::NodeHandle& pnh, const std::string& name)
+{
+  std::string scene_name;
+  if (pnh.getParam("scene", scene_name))
+    return withOverrides(fromScene(vrrw_scene::loadScene(scene_name), name), pnh);
+  return withOverrides(fromParameters(nh, pnh, name), pnh);
 }
 }  // namespace vrrw_control
