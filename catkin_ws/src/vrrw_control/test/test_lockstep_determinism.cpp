@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 #include <set>
 
-#include "ros_test_helpers.h"
+#include "lockstep_client.h"
 
 using namespace vrrw_control_test;
 using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;

@@ -9,7 +9,7 @@
 #include <ros/ros.h>
 #include <vrrw_physics/Contacts.h>
 
-#include "ros_test_helpers.h"
+#include "lockstep_client.h"
 
 using GripperClient = actionlib::SimpleActionClient<control_msgs::GripperCommandAction>;
 using State = actionlib::SimpleClientGoalState;

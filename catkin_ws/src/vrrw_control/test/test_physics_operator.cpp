@@ -10,7 +10,7 @@
 #include <vrrw_physics/SetMode.h>
 #include <vrrw_physics/SetSpring.h>
 
-#include "ros_test_helpers.h"
+#include "lockstep_client.h"
 
 using namespace vrrw_control_test;
 using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;

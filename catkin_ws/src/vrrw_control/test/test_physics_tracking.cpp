@@ -8,7 +8,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <memory>
-#include "ros_test_helpers.h"
+#include "lockstep_client.h"
 #include <vrrw_control/msg_conversions.h>
 #include <vrrw_control/trajectory_interpolator.h>
 
