@@ -136,7 +136,6 @@ void GhostMarkers::onFeedback(const visualization_msgs::InteractiveMarkerFeedbac
     geometry_msgs::PoseStamped stamped;
     stamped.header = feedback->header;
     stamped.pose = feedback->pose;
-    std::lock_guard<std::mutex> lock(view_.mutex());
     pose = view_.poseInWorld(stamped, "feedback");
   }
   catch (const std::exception& e)
@@ -177,11 +176,10 @@ void GhostMarkers::solveLoop()
     }
     for (const auto& [robot, pending] : work)
     {
-      Eigen::Vector2d residual;
       Outcome outcome;
       {
         std::lock_guard<std::mutex> lock(view_.mutex());
-        outcome = ghosts_[robot]->drag(pending.pose, pending.stamp, max_jump_, residual);
+        outcome = ghosts_[robot]->drag(pending.pose, pending.stamp, max_jump_);
       }
       const std::string status = outcome.success ? "" : outcome.message;
       std::lock_guard<std::mutex> lock(draw_mutex_);
