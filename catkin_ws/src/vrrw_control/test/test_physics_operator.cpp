@@ -129,7 +129,7 @@ TEST(PhysicsOperator, APushedCompliantArmHoldsItsPoseAfterFreeDrive)
             << drift * 1e3 << " mm in 5 s" << std::endl;
   EXPECT_GT(moved, 0.03);
   EXPECT_EQ(worst_velocity, 0.0);
-  EXPECT_LT(worst_offset, 0.01);
+  EXPECT_LT(worst_offset, 3e-3);  // 1.04e-3 rad measured in three runs (issue 21: within about 3x)
   EXPECT_LT(drift, 1e-3);
 }
 

@@ -56,7 +56,7 @@ FreeDrive::FreeDrive(WorldView& view, std::vector<GhostInterface*> arms, double 
         }));
   }
   hand_markers_ = nh.advertise<visualization_msgs::MarkerArray>("/operator/hands", 1);
-  discover_timer_ = nh.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { discoverHands(); });
+  discover_timer_ = nh.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) { discoverHands(); });
   tick_timer_ = nh.createWallTimer(ros::WallDuration(0.05), [this](const ros::WallTimerEvent&) { tick(); });
 }
 

@@ -64,7 +64,7 @@ private:
   std::map<std::string, ros::Publisher> active_pubs_, commands_;
   std::vector<ros::ServiceServer> services_;
   ros::Publisher hand_markers_;
-  ros::Timer discover_timer_;
+  ros::WallTimer discover_timer_;  ///< wall clock, as below: hands are found in the person's time
   ros::WallTimer tick_timer_;  ///< wall clock: a hand's tracker goes silent in the person's time
 };
 }  // namespace vrrw_interaction

@@ -36,6 +36,7 @@ GhostInterface::GhostInterface(WorldView& view, const vrrw_scene::Robot& robot, 
   ros::NodeHandle nh("/" + robot_ + "/ghost");
   joint_states_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10, true);
   advertise(nh, execution_queue);
+  // 10 Hz besides every change: a late subscriber, a recorder or rviz gets the ghost while nothing moves
   keepalive_ = nh.createTimer(ros::Duration(0.1), [this](const ros::TimerEvent&) {
     std::lock_guard<std::mutex> lock(view_.mutex());
     publish(ros::Time::now());
