@@ -43,13 +43,16 @@ int main(int argc, char** argv)
     try
     {
       if (!scene.robot(name))
-        throw std::runtime_error("unknown robot '" + name + "' in scene " + scene.name + " (skipped)");
+      {
+        ROS_ERROR_STREAM("~robots: unknown robot '" << name << "' in scene " << scene.name << " (skipped)");
+        continue;
+      }
       ghosts.push_back(std::make_unique<GhostInterface>(view, *scene.robot(name), presets, execution_queue));
       arms.push_back(ghosts.back().get());
     }
     catch (const std::exception& e)
     {
-      ROS_ERROR_STREAM("~robots: " << name << ": " << e.what());
+      ROS_ERROR_STREAM("robot " << name << ": " << e.what() << " (no ghost for it)");
     }
   SpringGains gains;
   gains.angular_stiffness = pnh.param("grip_angular_stiffness", gains.angular_stiffness);

@@ -17,6 +17,7 @@ bool fingersSqueeze(const std::string& object, const std::vector<BodyContact>& c
     if (c.normal_force >= kSqueezeForce && std::find(gripper_links.begin(), gripper_links.end(), other) != gripper_links.end())
       pads.push_back(c.position - tcp);
   }
+  // opposite sides: two offsets from the TCP pointing away from each other (the fingers close towards it)
   for (std::size_t i = 0; i < pads.size(); ++i)
     for (std::size_t j = i + 1; j < pads.size(); ++j)
       if (pads[i].dot(pads[j]) < 0.0)
@@ -27,6 +28,7 @@ bool fingersSqueeze(const std::string& object, const std::vector<BodyContact>& c
 bool closedGripperHolds(const vrrw_kinematics::CollisionWorld& world, const Eigen::VectorXd& state,
                         const vrrw_scene::Robot& robot, const GripperRange& gripper, const std::string& object)
 {
+  // fake mode has no contact forces: a gripper closed well past open with its TCP at the object stands for a grasp
   const vrrw_kinematics::RobotModel& model = world.model();
   const int v = model.variableIndex(gripper.joint);
   if (v < 0 || gripper.closedFraction(state[v]) < kClosedFraction)
@@ -40,7 +42,7 @@ bool closedGripperHolds(const vrrw_kinematics::CollisionWorld& world, const Eige
 std::vector<std::string> linksBelow(const vrrw_kinematics::RobotModel& model, const std::string& link)
 {
   std::vector<std::string> below;
-  for (std::vector<int> open{ model.linkIndex(link) }; !open.empty();)
+  for (std::vector<int> open{ model.linkIndex(link) }; !open.empty();)  // depth first over the child links
   {
     const vrrw_kinematics::LinkModel& next = model.links()[open.back()];
     open.pop_back();
@@ -112,6 +114,8 @@ std::vector<HeldEvent> HeldObjects::update(const std::string& object, const std:
   }
   if (!holder.empty())
     return { attach(object, holder, live, now) };
+  // nobody holds it by the rule now: a held object is let go only after kLetGo without it (a squeeze flickers as
+  // the contacts settle, a message or two may miss a pad)
   if (it == held_.end() || now - it->second.last_seen < kLetGo)
     return {};
   return { detach(object, live) };
@@ -151,7 +155,8 @@ HeldEvent HeldObjects::detach(const std::string& object, const Eigen::VectorXd& 
 {
   Held& held = held_.at(object);
   releaseSupports(object, held, live, true);
-  world_.detachObject(object, live);
+  world_.detachObject(object, live);  // where it is now
+  // standing free again: the fixed objects the ACM let it touch before the grasp (the table it stands on)
   for (const std::string& fixed : held.restore)
     world_.setAllowed(object, fixed, true);
   const HeldEvent event{ held.robot, "detach", object + " from " + scene_.robot(held.robot)->tcp_link };
@@ -167,6 +172,7 @@ void HeldObjects::releaseLifted(const Eigen::VectorXd& live)
 
 void HeldObjects::releaseSupports(const std::string& object, Held& held, const Eigen::VectorXd& live, bool all)
 {
+  // kLift (1 cm) from where it was taken: clear of the table, past the few millimetres a squeeze settles by
   if (held.supports.empty() || (!all && (position(object, live) - held.taken_at).norm() < kLift))
     return;
   for (const std::string& support : held.supports)

@@ -64,6 +64,7 @@ void GhostInterface::advertise(ros::NodeHandle& nh, ros::CallbackQueue& executio
 
 void GhostInterface::ghostInto(Eigen::VectorXd& state)
 {
+  // while a plan previews, the ghost shows where the robot will be on it (on ROS time: the controller's pace)
   const std::optional<Eigen::VectorXd> previewed = preview_.at(ros::Time::now().toSec());
   state = arm_.withJointValues(state, previewed ? *previewed : ghost_.joints());
 }
@@ -164,6 +165,7 @@ Outcome GhostInterface::plan(double time_limit, trajectory_msgs::JointTrajectory
   if (!std::isfinite(time_limit))
     return { false, "time_limit: not finite" };
   std::lock_guard<std::mutex> lock(view_.mutex());
+  // planning holds the mutex (the arm's planner and the collision world are shared): up to time_limit
   const vrrw_kinematics::TrajectoryResult result = ghost_.plan(view_.liveState(), time_limit, scaling, profile);
   if (!result.success)
   {
@@ -187,6 +189,7 @@ Outcome GhostInterface::plan(double time_limit, trajectory_msgs::JointTrajectory
 
 Outcome GhostInterface::execute(control_msgs::FollowJointTrajectoryResult* result)
 {
+  // the plan is taken (and forgotten: executed once) under the mutex; the motion is waited for without it
   trajectory_msgs::JointTrajectory plan;
   double duration = 0.0;
   {

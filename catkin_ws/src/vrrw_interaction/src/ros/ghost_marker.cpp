@@ -165,6 +165,7 @@ void GhostMarkers::solveLoop()
       work.swap(pending_);
       moved.swap(moved_);
     }
+    // ghosts a service moved: their markers follow, green; then the newest dragged pose of each marker is solved
     const ros::WallTime start = ros::WallTime::now();
     bool changed = !moved.empty();
     for (const auto& [robot, pose] : moved)
@@ -196,6 +197,7 @@ void GhostMarkers::solveLoop()
       std::lock_guard<std::mutex> lock(draw_mutex_);
       server_.applyChanges();
     }
+    // at most `rate` solves a second (wall clock: the operator's hand); poses arriving meanwhile coalesce
     const ros::WallDuration rest = ros::WallDuration(period_) - (ros::WallTime::now() - start);
     if (rest > ros::WallDuration(0))
       rest.sleep();

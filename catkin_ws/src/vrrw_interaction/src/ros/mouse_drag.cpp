@@ -35,6 +35,7 @@ MouseDrag::MouseDrag(WorldView& view, std::vector<GhostInterface*> arms, const S
 
 void MouseDrag::placeMarkers()
 {
+  // the TCPs of the boxes nobody holds, then (without the world's mutex) the boxes moved where they changed
   std::set<std::string> dragging;
   {
     std::lock_guard<std::mutex> lock(drag_mutex_);
@@ -83,6 +84,8 @@ void MouseDrag::onFeedback(const visualization_msgs::InteractiveMarkerFeedbackCo
     ROS_WARN_STREAM_THROTTLE(1.0, "/free_drive/feedback: " << e.what());
     return;
   }
+  // down: a spring on the TCP (position only) pulls it to the box; moves: its target follows; up: let go.
+  // drag_mutex_ is not held across the physics node's services (they wait for it).
   std::unique_lock<std::mutex> lock(drag_mutex_);
   const bool dragging = dragging_.count(robot) > 0;
   if (f->event_type == F::MOUSE_DOWN && !dragging)
