@@ -222,10 +222,10 @@ TEST_F(GhostTest, BadRequestsAreRefusedNamingTheFieldAndTheGhostStays)
 {
   ASSERT_TRUE(ghost_.preset("home", state_).success);
   const Eigen::VectorXd home = ghost_.joints();
-  // a joint named twice is refused, as /<robot>/plan and the controller refuse it (issue 21)
+  // a joint named twice is refused (vrrw_common's joint mapping), as /<robot>/plan and the controller refuse it
   const Outcome twice = ghost_.setJoints({ "ur5e_elbow_joint", "ur5e_elbow_joint" }, { 0.5, 0.7 }, state_);
   EXPECT_FALSE(twice.success);
-  EXPECT_EQ(twice.message, "name[1]: joint ur5e_elbow_joint: named twice");
+  EXPECT_EQ(twice.message, "name: 'ur5e_elbow_joint' named twice");
   EXPECT_EQ(ghost_.joints(), home);
   // a target 1e300 m away says how far (it said "residual 0.000 m": issue 21), in a few characters
   Eigen::Isometry3d far = ghost_.tcpPose(state_);
