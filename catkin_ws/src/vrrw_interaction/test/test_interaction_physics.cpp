@@ -32,8 +32,8 @@ TEST(InteractionPhysics, AHandDragsTheWristAndReleasingFreezesIt)
   std::cout << "grabbed " << figures.body << ": rms " << figures.rms << " m, max " << figures.max << " m over "
             << figures.samples << " samples; drift " << figures.drift << " m in 2 s\n";
   EXPECT_EQ(figures.body.rfind("ur5e_", 0), 0u);
-  EXPECT_LT(figures.rms, 0.02);
-  EXPECT_LT(figures.drift, 1e-3);
+  EXPECT_LT(figures.rms, 0.02);     // 1.5-1.6 cm measured (the spring's lag at 5000 N/m)
+  EXPECT_LT(figures.drift, 1e-6);   // 0-4e-14 m measured: rigid drives hold their targets
 }
 
 TEST(InteractionPhysics, AGhostPlanExecutesWithinTheGoalTolerance)
@@ -109,7 +109,7 @@ TEST(InteractionPhysics, TheMouseMarkerPullsTheTcp)
   pub.publish(f);
   const Eigen::Vector3d moved = tcpAt() - start;
   std::cout << "mouse pulled the TCP " << moved.transpose() << " m\n";
-  EXPECT_NEAR(moved.y(), -0.1, 0.02);
+  EXPECT_NEAR(moved.y(), -0.1, 0.001);  // -0.100001 m measured in three runs
   ASSERT_TRUE(call<std_srvs::SetBool>("/ur5e/free_drive").response.success);
 }
 
@@ -233,7 +233,7 @@ TEST(InteractionPhysics, AHeldDrillIsAttachedToTheGhostAndPlannedWith)
     closest = std::min(closest, cell.world.distance(state, "drill").distance);
   }
   std::cout << "carry plan: " << carry.points.size() << " states, drill at least " << closest << " m from anything\n";
-  EXPECT_GT(closest, 0.0);
+  EXPECT_GT(closest, 0.0075);  // 2.2 cm measured
   control_msgs::GripperCommandGoal open;
   gripper.sendGoal(open);
   EXPECT_TRUE(waitEvent(events, "detach", 5.0)) << "no detach event";
@@ -241,9 +241,11 @@ TEST(InteractionPhysics, AHeldDrillIsAttachedToTheGhostAndPlannedWith)
 
 namespace
 {
-/// The arm to `q` through the ghost: set_joints, plan, execute ("" or what failed).
+/// The arm to `q` through the ghost: set_joints, plan, execute; "" once the arm is within 0.05 rad of `q` (a
+/// goal-tolerance abort of the physics controller on a loaded machine, issue 22's, does not matter here).
 std::string armTo(const std::vector<double>& q)
 {
+  Latest<sensor_msgs::JointState> robot(*nh, "/ur5e/joint_states");
   vrrw_msgs::GhostSetJoints set;
   set.request.position = q;
   if (set = call("/ur5e/ghost/set_joints", set); !set.response.success)
@@ -251,7 +253,12 @@ std::string armTo(const std::vector<double>& q)
   if (const auto plan = call<vrrw_msgs::GhostPlan>("/ur5e/ghost/plan"); !plan.response.success)
     return "plan: " + plan.response.message;
   const auto execute = call<vrrw_msgs::GhostExecute>("/ur5e/ghost/execute");
-  return execute.response.success ? "" : "execute: " + execute.response.message;
+  ros::WallDuration(0.5).sleep();
+  const Eigen::VectorXd at = arm6(robot.last());
+  const double off = (at - Eigen::Map<const Eigen::VectorXd>(q.data(), 6)).cwiseAbs().maxCoeff();
+  if (off < 0.05)
+    return "";
+  return "execute: " + execute.response.message + " (" + std::to_string(off) + " rad from the goal)";
 }
 
 struct TcpDrag
@@ -333,6 +340,10 @@ TEST(InteractionPhysics, AHandAtTheTcpDragsTheArmAnywhereInTheWorkspace)
     { "elbow nearly straight, reaching out", { 0.9, -0.9, 0.05, -1.2, -1.57, 0.0 } },
     { "folded low in front", { -0.6, -1.3, 1.6, -1.9, -1.57, 0.5 } },
   };
+  actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper("/ur5e/gripper_controller/gripper_cmd", true);
+  ASSERT_TRUE(gripper.waitForServer(ros::Duration(5.0)));
+  gripper.sendGoal(control_msgs::GripperCommandGoal());  // open: nothing held from an earlier test
+  gripper.waitForResult(ros::Duration(3.0));
   int n = 0;
   for (const auto& [what, q] : grid)
   {
@@ -341,7 +352,7 @@ TEST(InteractionPhysics, AHandAtTheTcpDragsTheArmAnywhereInTheWorkspace)
     const TcpDrag drag = dragTcp("grid" + std::to_string(n++));
     std::cout << what << ": grabbed " << drag.grabbed << ", moved " << drag.moved << " m (" << drag.off_line
               << " m off the line), fastest joint " << drag.fastest << " rad/s\n";
-    // measured (2 shared cores): moved 9.16-9.95 cm, 0.1-1.8 cm off the line, fastest joint 0.07-0.17 rad/s
+    // measured (2 shared cores): moved 9.16-9.95 cm, 0.1-1.8 cm off the line, fastest joint 0.06-0.19 rad/s
     EXPECT_EQ(drag.grabbed, "ur5e_robotiq_arg2f_base_link") << what;
     EXPECT_FALSE(drag.released) << what;
     EXPECT_NEAR(drag.moved, 0.1, 0.015) << what;

@@ -324,7 +324,8 @@ def render(args, workdir, processes):
         if missing:
             print(f'render: {missing}', file=sys.stderr, flush=True)
             sys.exit(1)
-    else:  # the scene on a master of its own: ghosts only when asked for (the interaction node draws them)
+    display = start_display(processes, args.width, args.height)  # (while the scene comes up)
+    if not args.running:  # the scene on a master of its own; the interaction node (the ghosts) when asked for
         os.environ['ROS_MASTER_URI'] = f'http://127.0.0.1:{free_port()}'
         log(f'launching {args.scene}')
         processes.start(['roslaunch', os.path.join(ROOT, 'launch', 'bringup.launch'), f'scene:={args.scene}',
@@ -351,7 +352,6 @@ def render(args, workdir, processes):
         f'{camera["distance"]:.2f} m; waiting for a still frame')
     config = os.path.join(workdir, 'render.rviz')
     render_config(config, args.width, args.height, set(args.hide) | (set() if ghosts else {'Ghosts'}), camera)
-    display = start_display(processes, args.width, args.height)
     processes.start(['rosrun', 'rviz', 'rviz', '-d', config], open(os.path.join(workdir, 'rviz.log'), 'w'),
                     dict(os.environ, DISPLAY=f':{display}'))
     frame = os.path.join(workdir, 'frame.png')
