@@ -1,9 +1,12 @@
 // interaction_node: the operator's handles on every arm of a scene (ghost-drive, markers, free-drive).
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <vrrw_scene/scene_loader.h>
 
 #include "free_drive.h"
+#include "ghost_frames.h"
 #include "ghost_marker.h"
+#include "mouse_drag.h"
 
 using namespace vrrw_interaction;
 
@@ -11,18 +14,14 @@ int main(int argc, char** argv)
 {
   ros::init(argc, argv, "interaction");
   ros::NodeHandle pnh("~");
-  const std::string scene_name = pnh.param<std::string>("scene", "");
   const std::string mode = pnh.param<std::string>("mode", "fake");
-  const std::string presets =
-      pnh.param<std::string>("presets", vrrw_scene::vrrwRoot() + "/urdf/config/presets.yaml");
-  const double marker_rate = pnh.param("marker_rate", 200.0);
-  const double max_jump = pnh.param("max_jump", 0.5);
+  const std::string presets = pnh.param<std::string>("presets", vrrw_scene::vrrwRoot() + "/urdf/config/presets.yaml");
   if (mode != "fake" && mode != "physics" && mode != "none")
     ROS_ERROR_STREAM("~mode: '" << mode << "' is not fake, physics or none; free-drive acts as in fake mode");
   vrrw_scene::Scene scene;
   try
   {
-    scene = vrrw_scene::loadScene(scene_name);
+    scene = vrrw_scene::loadScene(pnh.param<std::string>("scene", ""));
   }
   catch (const std::exception& e)
   {
@@ -35,53 +34,42 @@ int main(int argc, char** argv)
   if (robots.empty())
     for (const vrrw_scene::Robot& robot : scene.robots)
       robots.push_back(robot.name);
+  // ghost/execute waits for a whole motion: it is served here, off the spinner threads, one thread per arm
+  // and one more (a newer execute of an arm preempts its older one, which then returns)
+  ros::CallbackQueue execution_queue;
   std::vector<std::unique_ptr<GhostInterface>> ghosts;
   std::vector<GhostInterface*> arms;
   for (const std::string& name : robots)
-  {
-    const vrrw_scene::Robot* robot = scene.robot(name);
-    if (!robot)
-    {
-      ROS_ERROR_STREAM("~robots: unknown robot '" << name << "' in scene " << scene.name << " (skipped)");
-      continue;
-    }
     try
     {
-      ghosts.push_back(std::make_unique<GhostInterface>(view, *robot, presets));
+      if (!scene.robot(name))
+      {
+        ROS_ERROR_STREAM("~robots: unknown robot '" << name << "' in scene " << scene.name << " (skipped)");
+        continue;
+      }
+      ghosts.push_back(std::make_unique<GhostInterface>(view, *scene.robot(name), presets, execution_queue));
       arms.push_back(ghosts.back().get());
     }
     catch (const std::exception& e)
     {
       ROS_ERROR_STREAM("robot " << name << ": " << e.what() << " (no ghost for it)");
     }
-  }
-  // a grip on a link carries its orientation too (README: the wrist within 2 deg over the drag benchmark)
-  FreeDrive free_drive(view, arms, pnh.param("grab_distance", 0.05), pnh.param("hand_radius", 0.04),
-                       pnh.param("grip_angular_stiffness", 500.0), pnh.param("grip_angular_damping", 5.0));
-  GhostMarkers markers(view, arms, marker_rate, max_jump,
+  SpringGains gains;
+  gains.angular_stiffness = pnh.param("grip_angular_stiffness", gains.angular_stiffness);
+  gains.angular_damping = pnh.param("grip_angular_damping", gains.angular_damping);
+  FreeDrive free_drive(view, arms, pnh.param("grab_distance", 0.05), pnh.param("hand_radius", 0.04), gains);
+  std::unique_ptr<MouseDrag> mouse = mode == "physics" ? std::make_unique<MouseDrag>(view, arms, gains) : nullptr;
+  GhostMarkers markers(view, arms, pnh.param("marker_rate", 200.0), pnh.param("max_jump", 0.5),
                        [&free_drive](const std::string& robot, bool on) {
-                         if (const std::string error = free_drive.set(robot, on); !error.empty())
-                           ROS_WARN_STREAM(robot << " free-drive: " << error);
+                         if (const Outcome o = free_drive.set(robot, on); !o.success)
+                           ROS_WARN_STREAM(robot << " free-drive: " << o.message);
                        });
-  // the ghosts on tf (ghost/<link>), where rviz's "Ghosts" RobotModel and the render draw them
-  // at 30 Hz when a ghost (or a gripper) moved, else once a second
-  Eigen::VectorXd published;
-  ros::WallTime last_published;
-  ros::Timer frames = nh.createTimer(ros::Duration(1.0 / 30.0), [&](const ros::TimerEvent&) {
-    std::lock_guard<std::mutex> lock(view.mutex());
-    Eigen::VectorXd state = view.liveState();
-    for (GhostInterface* ghost : arms)
-      ghost->ghostInto(state);
-    if (published.size() == state.size() && (published - state).cwiseAbs().maxCoeff() < 1e-9 &&
-        ros::WallTime::now() - last_published < ros::WallDuration(1.0))
-      return;
-    view.publishGhostFrames(state);
-    published = state;
-    last_published = ros::WallTime::now();
-  });
+  GhostFrames frames(view, arms);
   ROS_INFO_STREAM("interaction: " << arms.size() << " arms of " << scene.name << " (" << mode << " mode)");
   ros::AsyncSpinner spinner(4);
+  ros::AsyncSpinner executions(arms.size() + 1, &execution_queue);
   spinner.start();
+  executions.start();
   ros::waitForShutdown();
   return 0;
 }

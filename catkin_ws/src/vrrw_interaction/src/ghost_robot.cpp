@@ -19,6 +19,16 @@ std::string fixed(double value, int digits)
   return out.str();
 }
 
+/// A residual in at most a dozen characters: millimetres in the workspace, powers of ten far outside it.
+std::string residual(double value, const char* unit)
+{
+  if (std::abs(value) < 1e3)
+    return fixed(value, 3) + " " + unit;
+  std::ostringstream out;
+  out << std::setprecision(3) << value << " " << unit;
+  return out.str();
+}
+
 /// Holds the place contact allowed for one check or plan.
 class PlaceContact
 {
@@ -47,7 +57,7 @@ std::string ikRefusal(const vrrw_kinematics::IkResult& ik)
   switch (ik.code)
   {
     case ErrorCode::NoSolution:
-      return "unreachable (residual " + fixed(ik.position_error, 3) + " m, " + fixed(ik.orientation_error, 3) + " rad)";
+      return "unreachable (residual " + residual(ik.position_error, "m") + ", " + residual(ik.orientation_error, "rad") + ")";
     case ErrorCode::JointJump:
       return "joint jump " + fixed(ik.jump, 2) + " rad (a branch flip; move the marker in smaller steps)";
     case ErrorCode::InCollision:

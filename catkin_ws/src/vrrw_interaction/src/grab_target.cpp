@@ -60,3 +60,48 @@ std::optional<GrabTarget> nearestBody(const vrrw_kinematics::CollisionWorld& wor
   return best;
 }
 }  // namespace vrrw_interaction
+
+namespace vrrw_interaction
+{
+std::string heldLink(const vrrw_kinematics::RobotModel& model, const std::string& link,
+                     const std::vector<std::string>& arm_joints)
+{
+  int held = model.linkIndex(link);
+  for (int l = held; model.links()[l].parent_joint >= 0;)
+  {
+    const vrrw_kinematics::JointModel& joint = model.joints()[model.links()[l].parent_joint];
+    if (joint.moves() && std::find(arm_joints.begin(), arm_joints.end(), joint.name) != arm_joints.end())
+      break;  // reached the arm: the links below it, up to here, are rigid with the arm's last link
+    if (joint.moves())
+      held = joint.parent_link;  // a gripper joint: hold what it hangs on
+    l = joint.parent_link;
+  }
+  return model.links()[held].name;
+}
+
+std::optional<GrabTarget> handGrab(const vrrw_kinematics::CollisionWorld& world, const vrrw_scene::Scene& scene,
+                                   const Eigen::VectorXd& state, const Eigen::Vector3d& point, const GrabRule& rule)
+{
+  const auto grabbable = [&](const vrrw_kinematics::CollisionBody& body) {
+    if (body.object)
+      return rule.movable_objects && body.link < 0 && !scene.object(body.name)->fixed;
+    return rule.robots.count(body.robot) > 0;
+  };
+  std::optional<GrabTarget> target = nearestBody(world, state, point, rule.max_distance, grabbable);
+  if (!target || target->object)
+    return target;
+  const vrrw_kinematics::RobotModel& model = world.model();
+  target->body = heldLink(model, target->body, scene.robot(target->robot)->arm_joints);
+  target->point_in_body = model.relativeTransform(state, model.links()[0].name, target->body).inverse() *
+                          target->point_in_world;
+  return target;
+}
+
+bool clearOfMovingBodies(const vrrw_kinematics::CollisionWorld& world, const vrrw_scene::Scene& scene,
+                         const Eigen::VectorXd& state, const Eigen::Vector3d& point, double radius)
+{
+  return !nearestBody(world, state, point, radius, [&](const vrrw_kinematics::CollisionBody& body) {
+    return !body.object || !scene.object(body.name)->fixed;
+  });
+}
+}  // namespace vrrw_interaction

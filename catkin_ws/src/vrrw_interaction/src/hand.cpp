@@ -28,6 +28,20 @@ void Hand::hold(const GrabTarget& target)
   pose_at_grab_ = pose_;
 }
 
+Eigen::Isometry3d tcpPose(vrrw_kinematics::Arm& arm, const Eigen::VectorXd& world_state)
+{
+  return arm.basePose(world_state) * arm.ikSolver().chain().fk(arm.jointValues(world_state));
+}
+
+vrrw_kinematics::IkResult armFollowingHand(vrrw_kinematics::Arm& arm, const Hand& hand,
+                                           const Eigen::Isometry3d& tcp_at_grab, const Eigen::VectorXd& world_state,
+                                           double max_jump)
+{
+  vrrw_kinematics::IkOptions options;
+  options.max_jump = max_jump;
+  return arm.solveCollisionFree(hand.carried(tcp_at_grab), arm.jointValues(world_state), world_state, options);
+}
+
 std::string gripError(double grip)
 {
   if (!std::isfinite(grip))

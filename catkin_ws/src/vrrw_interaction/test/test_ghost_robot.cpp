@@ -218,6 +218,30 @@ TEST_F(GhostTest, PlaceContactLetsTheHeldDrillTouchTheTableOnlyAtTheGhostAndOnTh
   EXPECT_EQ(toggles % 2, 0);
 }
 
+TEST_F(GhostTest, BadRequestsAreRefusedNamingTheFieldAndTheGhostStays)
+{
+  ASSERT_TRUE(ghost_.preset("home", state_).success);
+  const Eigen::VectorXd home = ghost_.joints();
+  // a joint named twice is refused (vrrw_common's joint mapping), as /<robot>/plan and the controller refuse it
+  const Outcome twice = ghost_.setJoints({ "ur5e_elbow_joint", "ur5e_elbow_joint" }, { 0.5, 0.7 }, state_);
+  EXPECT_FALSE(twice.success);
+  EXPECT_EQ(twice.message, "name: 'ur5e_elbow_joint' named twice");
+  EXPECT_EQ(ghost_.joints(), home);
+  // a target 1e300 m away says how far (it said "residual 0.000 m": issue 21), in a few characters
+  Eigen::Isometry3d far = ghost_.tcpPose(state_);
+  for (const double x : { 5.0, 1e100, 1e300 })
+  {
+    far.translation().x() = x;
+    const Outcome o = ghost_.setPose(far, state_, 10.0);
+    EXPECT_FALSE(o.success);
+    EXPECT_LT(o.message.size(), 60u) << o.message;
+    const double residual = std::stod(o.message.substr(o.message.find("residual ") + 9));
+    EXPECT_GT(residual, 0.5 * x) << o.message;
+    EXPECT_LT(residual, 2.0 * x) << o.message;
+  }
+  EXPECT_EQ(ghost_.joints(), home);
+}
+
 TEST_F(GhostTest, HandGrabsTheNearestBodyAtItsSurface)
 {
   std::vector<Eigen::Isometry3d> links;

@@ -8,6 +8,7 @@
 #include <vrrw_kinematics/top_grasp.h>
 #include <vrrw_msgs/GhostPlan.h>
 #include <vrrw_msgs/GhostPreset.h>
+#include <vrrw_msgs/GhostSetJoints.h>
 #include <vrrw_msgs/GhostSetPose.h>
 #include <vrrw_msgs/GhostSupportSurface.h>
 #include <std_srvs/Trigger.h>
@@ -31,8 +32,8 @@ TEST(InteractionPhysics, AHandDragsTheWristAndReleasingFreezesIt)
   std::cout << "grabbed " << figures.body << ": rms " << figures.rms << " m, max " << figures.max << " m over "
             << figures.samples << " samples; drift " << figures.drift << " m in 2 s\n";
   EXPECT_EQ(figures.body.rfind("ur5e_", 0), 0u);
-  EXPECT_LT(figures.rms, 0.02);
-  EXPECT_LT(figures.drift, 1e-3);
+  EXPECT_LT(figures.rms, 0.02);     // 1.5-1.6 cm measured (the spring's lag at 5000 N/m)
+  EXPECT_LT(figures.drift, 1e-6);   // 0-4e-14 m measured: rigid drives hold their targets
 }
 
 TEST(InteractionPhysics, AGhostPlanExecutesWithinTheGoalTolerance)
@@ -108,7 +109,7 @@ TEST(InteractionPhysics, TheMouseMarkerPullsTheTcp)
   pub.publish(f);
   const Eigen::Vector3d moved = tcpAt() - start;
   std::cout << "mouse pulled the TCP " << moved.transpose() << " m\n";
-  EXPECT_NEAR(moved.y(), -0.1, 0.02);
+  EXPECT_NEAR(moved.y(), -0.1, 0.001);  // -0.100001 m measured in three runs
   ASSERT_TRUE(call<std_srvs::SetBool>("/ur5e/free_drive").response.success);
 }
 
@@ -232,10 +233,132 @@ TEST(InteractionPhysics, AHeldDrillIsAttachedToTheGhostAndPlannedWith)
     closest = std::min(closest, cell.world.distance(state, "drill").distance);
   }
   std::cout << "carry plan: " << carry.points.size() << " states, drill at least " << closest << " m from anything\n";
-  EXPECT_GT(closest, 0.0);
+  EXPECT_GT(closest, 0.0075);  // 2.2 cm measured
   control_msgs::GripperCommandGoal open;
   gripper.sendGoal(open);
   EXPECT_TRUE(waitEvent(events, "detach", 5.0)) << "no detach event";
+}
+
+namespace
+{
+/// The arm to `q` through the ghost: set_joints, plan, execute; "" once the arm is within 0.05 rad of `q` (a
+/// goal-tolerance abort of the physics controller on a loaded machine, issue 22's, does not matter here).
+std::string armTo(const std::vector<double>& q)
+{
+  Latest<sensor_msgs::JointState> robot(*nh, "/ur5e/joint_states");
+  vrrw_msgs::GhostSetJoints set;
+  set.request.position = q;
+  if (set = call("/ur5e/ghost/set_joints", set); !set.response.success)
+    return "set_joints: " + set.response.message;
+  if (const auto plan = call<vrrw_msgs::GhostPlan>("/ur5e/ghost/plan"); !plan.response.success)
+    return "plan: " + plan.response.message;
+  const auto execute = call<vrrw_msgs::GhostExecute>("/ur5e/ghost/execute");
+  ros::WallDuration(0.5).sleep();
+  const Eigen::VectorXd at = arm6(robot.last());
+  const double off = (at - Eigen::Map<const Eigen::VectorXd>(q.data(), 6)).cwiseAbs().maxCoeff();
+  if (off < 0.05)
+    return "";
+  return "execute: " + execute.response.message + " (" + std::to_string(off) + " rad from the goal)";
+}
+
+struct TcpDrag
+{
+  std::string grabbed;
+  double moved = 0.0;        ///< m along the hand's motion
+  double off_line = 0.0;     ///< m across it
+  double fastest = 0.0;      ///< rad/s, the fastest joint during the drag
+  bool released = false;     ///< the grip was let go on the way (the physics guard releases it)
+};
+
+/// Free-drive on; a hand closes at the live TCP and moves it 10 cm along x in 2 s at 100 Hz (issue 21 item 5).
+TcpDrag dragTcp(const std::string& hand_id)
+{
+  TcpDrag out;
+  Latest<vrrw_msgs::Event> events(*nh, "/operator/events");
+  Latest<sensor_msgs::JointState> robot(*nh, "/ur5e/joint_states");
+  std_srvs::SetBool on;
+  on.request.data = true;
+  EXPECT_TRUE(call("/ur5e/free_drive", on).response.success);
+  ros::Publisher pose_pub = nh->advertise<geometry_msgs::PoseStamped>("/operator/" + hand_id + "/pose", 10);
+  ros::Publisher grip_pub = nh->advertise<std_msgs::Float64>("/operator/" + hand_id + "/grip", 10);
+  const auto tcpAt = []() -> Eigen::Vector3d {
+    return tf2::transformToEigen(tf->lookupTransform("world", "ur5e_tcp", ros::Time(0), ros::Duration(2.0))).translation();
+  };
+  const Eigen::Vector3d start = tcpAt();
+  geometry_msgs::PoseStamped pose;
+  pose.header.frame_id = "world";
+  pose.pose.orientation.w = 1.0;
+  const auto send = [&](const Eigen::Vector3d& at) {
+    pose.header.stamp = ros::Time::now();
+    pose.pose.position = tf2::toMsg(at);
+    pose_pub.publish(pose);
+  };
+  for (int i = 0; i < 300 && (grip_pub.getNumSubscribers() == 0 || pose_pub.getNumSubscribers() == 0); ++i)
+    send(start), ros::WallDuration(0.01).sleep();  // the node finds hands once a second
+  for (int i = 0; i < 20; ++i)
+    send(start), ros::WallDuration(0.01).sleep();
+  std_msgs::Float64 grip;
+  grip.data = 1.0;
+  grip_pub.publish(grip);
+  for (int i = 0; i < 100 && out.grabbed.empty(); ++i, ros::WallDuration(0.01).sleep())
+    for (const auto& e : events.all())
+      if (e.kind == "grab")
+        out.grabbed = e.detail.substr(e.detail.find("grabbed ") + 8, e.detail.find(" at ") - e.detail.find("grabbed ") - 8);
+  const std::size_t before = robot.size();
+  ros::WallTime tick = ros::WallTime::now();
+  for (int i = 1; i <= 250; ++i)  // 2 s moving, then half a second at the end
+  {
+    send(start + Eigen::Vector3d(0.1 * std::min(1.0, i / 200.0), 0, 0));
+    tick += ros::WallDuration(0.01);
+    if (const ros::WallDuration rest = tick - ros::WallTime::now(); rest > ros::WallDuration(0))
+      rest.sleep();
+  }
+  const Eigen::Vector3d moved = tcpAt() - start;
+  out.moved = moved.x(), out.off_line = moved.tail<2>().norm();
+  const auto states = robot.all();
+  for (std::size_t k = before; k < states.size(); ++k)
+    for (const double v : states[k].velocity)
+      out.fastest = std::max(out.fastest, std::abs(v));
+  for (const auto& e : events.all())
+    out.released = out.released || e.kind == "release";
+  grip.data = 0.0;
+  grip_pub.publish(grip);
+  ros::WallDuration(0.1).sleep();
+  EXPECT_TRUE(call<std_srvs::SetBool>("/ur5e/free_drive").response.success);
+  return out;
+}
+}  // namespace
+
+TEST(InteractionPhysics, AHandAtTheTcpDragsTheArmAnywhereInTheWorkspace)
+{
+  // issue 21 item 5: the stretched arm blew up (the guard at 53-56 rad/s, the TCP stopped after 5.4 cm): the
+  // grip took a finger pad. A grid over the workspace, near its singularities too.
+  const std::vector<std::pair<std::string, std::vector<double>>> grid = {
+    { "stretched up (issue 21)", { 0.434, -1.608, 0.666, -1.785, -1.052, 0.257 } },
+    { "home: elbow straight, wrist singular", { 0.0, -1.5708, 0.0, -1.5708, 0.0, 0.0 } },
+    { "wrist nearly singular", { 0.434, -1.2, 1.2, -1.57, 0.05, 0.257 } },
+    { "elbow nearly straight, reaching out", { 0.9, -0.9, 0.05, -1.2, -1.57, 0.0 } },
+    { "folded low in front", { -0.6, -1.3, 1.6, -1.9, -1.57, 0.5 } },
+  };
+  actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper("/ur5e/gripper_controller/gripper_cmd", true);
+  ASSERT_TRUE(gripper.waitForServer(ros::Duration(5.0)));
+  gripper.sendGoal(control_msgs::GripperCommandGoal());  // open: nothing held from an earlier test
+  gripper.waitForResult(ros::Duration(3.0));
+  int n = 0;
+  for (const auto& [what, q] : grid)
+  {
+    ASSERT_EQ(armTo(q), "") << what;
+    ros::WallDuration(0.3).sleep();
+    const TcpDrag drag = dragTcp("grid" + std::to_string(n++));
+    std::cout << what << ": grabbed " << drag.grabbed << ", moved " << drag.moved << " m (" << drag.off_line
+              << " m off the line), fastest joint " << drag.fastest << " rad/s\n";
+    // measured (2 shared cores): moved 9.16-9.95 cm, 0.1-1.8 cm off the line, fastest joint 0.06-0.19 rad/s
+    EXPECT_EQ(drag.grabbed, "ur5e_robotiq_arg2f_base_link") << what;
+    EXPECT_FALSE(drag.released) << what;
+    EXPECT_NEAR(drag.moved, 0.1, 0.015) << what;
+    EXPECT_LT(drag.off_line, 0.03) << what;
+    EXPECT_LT(drag.fastest, 0.5) << what;
+  }
 }
 
 int main(int argc, char** argv)

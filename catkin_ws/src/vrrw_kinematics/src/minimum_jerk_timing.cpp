@@ -60,6 +60,10 @@ vrrw_trajectory::JointTrajectory minimumJerkTrajectory(const std::vector<Eigen::
   for (std::size_t j = 0; j < n; ++j)
     if (!(options.max_velocity[j] > 0.0) || !(options.max_acceleration[j] > 0.0))
       throw KinematicsError(ErrorCode::InvalidArgument, "minimum-jerk timing: " + joint_names[j] + ": limits must be positive");
+  double total = 0.0;
+  for (std::size_t k = 1; k < path.size(); ++k)
+    total += pieceDuration(path[k] - path[k - 1], options);
+  checkDuration(total, options);
   vrrw_trajectory::JointTrajectory trajectory;
   trajectory.joint_names = joint_names;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(Eigen::Index(n));

@@ -33,7 +33,7 @@ NumericIK::Error NumericIK::error(const Eigen::Isometry3d& target, const Eigen::
 {
   Error e;
   e.residual.head<3>() = target.translation() - current.translation();
-  e.position = e.residual.head<3>().norm();
+  e.position = e.residual.head<3>().stableNorm();  // (norm() squares: a target 1e300 m away would be inf)
   if (options.mode == IkOptions::Mode::PositionOnly)
   {
     e.residual.tail<3>().setZero();
@@ -106,7 +106,7 @@ bool NumericIK::descend(const Eigen::Isometry3d& target, const IkOptions& option
         break;
       step *= 0.5;
     }
-    if (next.residual.norm() >= norm)
+    if (!(next.residual.norm() < norm))  // (also a step that came out NaN: a target 1e300 m away)
       return false;
     slow = next.residual.norm() > 0.9 * norm ? slow + 1 : 0;
     if (slow > 4)
@@ -145,10 +145,10 @@ IkResult NumericIK::solve(const Eigen::Isometry3d& target, const Eigen::VectorXd
       if (!options.nearest)
         return result;
     }
-    else if (!solved && !result.success && e.residual.norm() < closest)
+    else if (!solved && !result.success && e.residual.stableNorm() < closest)
     {
       // A failure reports the residual of the attempt that came closest to the target.
-      closest = e.residual.norm();
+      closest = e.residual.stableNorm();
       result.position_error = e.position;
       result.orientation_error = e.orientation;
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "vrrw_kinematics/kinematics_error.h"
@@ -334,6 +335,19 @@ void sampleMotion(const std::vector<PathPiece>& pieces, const std::vector<Interv
 }
 }  // namespace
 
+void checkDuration(double duration, const TimingOptions& options)
+{
+  if (duration <= options.max_duration)
+    return;
+  char line[256];
+  std::snprintf(line, sizeof(line),
+                "trajectory: %.4g s (%.4g points at %g s) at these limits; a plan may last at most %g s (%.0f points): "
+                "raise max_velocity_scaling_factor or max_acceleration_scaling_factor",
+                duration, std::ceil(duration / options.sample_period) + 1.0, options.sample_period, options.max_duration,
+                std::floor(options.max_duration / options.sample_period) + 1.0);
+  throw KinematicsError(ErrorCode::InvalidArgument, line);
+}
+
 TimeParameterization::TimeParameterization(const TimingOptions& options) : options_(options)
 {
   const std::size_t n = options.max_velocity.size();
@@ -374,7 +388,9 @@ vrrw_trajectory::JointTrajectory TimeParameterization::compute(const std::vector
   const PhasePlane true_plane(options_.max_velocity, options_.max_acceleration, 1.0);
   const std::vector<double> x = squaredPathVelocity(intervals, derivatives, plane, true_plane,
                                                     velocityLimitCurve(derivatives, plane));
-  sampleMotion(pieces, intervals, x, gridTimes(intervals, x), options_.sample_period, waypoints.back(), trajectory);
+  const std::vector<double> times = gridTimes(intervals, x);
+  checkDuration(times.back(), options_);
+  sampleMotion(pieces, intervals, x, times, options_.sample_period, waypoints.back(), trajectory);
   return trajectory;
 }
 }  // namespace vrrw_kinematics

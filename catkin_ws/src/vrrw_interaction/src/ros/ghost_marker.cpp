@@ -136,7 +136,6 @@ void GhostMarkers::onFeedback(const visualization_msgs::InteractiveMarkerFeedbac
     geometry_msgs::PoseStamped stamped;
     stamped.header = feedback->header;
     stamped.pose = feedback->pose;
-    std::lock_guard<std::mutex> lock(view_.mutex());
     pose = view_.poseInWorld(stamped, "feedback");
   }
   catch (const std::exception& e)
@@ -166,6 +165,7 @@ void GhostMarkers::solveLoop()
       work.swap(pending_);
       moved.swap(moved_);
     }
+    // ghosts a service moved: their markers follow, green; then the newest dragged pose of each marker is solved
     const ros::WallTime start = ros::WallTime::now();
     bool changed = !moved.empty();
     for (const auto& [robot, pose] : moved)
@@ -177,11 +177,10 @@ void GhostMarkers::solveLoop()
     }
     for (const auto& [robot, pending] : work)
     {
-      Eigen::Vector2d residual;
       Outcome outcome;
       {
         std::lock_guard<std::mutex> lock(view_.mutex());
-        outcome = ghosts_[robot]->drag(pending.pose, pending.stamp, max_jump_, residual);
+        outcome = ghosts_[robot]->drag(pending.pose, pending.stamp, max_jump_);
       }
       const std::string status = outcome.success ? "" : outcome.message;
       std::lock_guard<std::mutex> lock(draw_mutex_);
@@ -198,6 +197,7 @@ void GhostMarkers::solveLoop()
       std::lock_guard<std::mutex> lock(draw_mutex_);
       server_.applyChanges();
     }
+    // at most `rate` solves a second (wall clock: the operator's hand); poses arriving meanwhile coalesce
     const ros::WallDuration rest = ros::WallDuration(period_) - (ros::WallTime::now() - start);
     if (rest > ros::WallDuration(0))
       rest.sleep();

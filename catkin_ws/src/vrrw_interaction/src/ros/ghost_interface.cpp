@@ -1,91 +1,72 @@
 #include "ghost_interface.h"
 
-#include <tf2_eigen/tf2_eigen.h>
+#include <vrrw_msgs/GhostPreset.h>
+#include <vrrw_msgs/GhostSupportSurface.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
 namespace vrrw_interaction
 {
 namespace
 {
-/// \brief Linear interpolation of a trajectory at `t` s (the preview only needs to look right).
-Eigen::VectorXd sample(const vrrw_trajectory::JointTrajectory& trajectory, double t)
+/// A service answered by a request returning an Outcome.
+template <class Service>
+ros::ServiceServer outcomeService(ros::NodeHandle& nh, const std::string& name,
+                                  std::function<Outcome(typename Service::Request&)> request)
 {
-  const auto& points = trajectory.points;
-  std::size_t i = 1;
-  while (i < points.size() && points[i].time < t)
-    ++i;
-  if (i >= points.size())
-    return Eigen::Map<const Eigen::VectorXd>(points.back().positions.data(), points.back().positions.size());
-  const auto& a = points[i - 1];
-  const auto& b = points[i];
-  const double s = b.time > a.time ? std::clamp((t - a.time) / (b.time - a.time), 0.0, 1.0) : 1.0;
-  const Eigen::Map<const Eigen::VectorXd> qa(a.positions.data(), a.positions.size());
-  const Eigen::Map<const Eigen::VectorXd> qb(b.positions.data(), b.positions.size());
-  return qa + s * (qb - qa);
+  return nh.advertiseService<typename Service::Request, typename Service::Response>(
+      name, [request](typename Service::Request& req, typename Service::Response& res) {
+        const Outcome o = request(req);
+        res.success = o.success, res.message = o.message;
+        return true;
+      });
 }
 }  // namespace
 
-GhostInterface::GhostInterface(WorldView& view, const vrrw_scene::Robot& robot, const std::string& presets_file)
+GhostInterface::GhostInterface(WorldView& view, const vrrw_scene::Robot& robot, const std::string& presets_file,
+                               ros::CallbackQueue& execution_queue)
   : view_(view)
   , robot_(robot.name)
   , arm_(view.world(), robot)
   , ghost_(arm_, Presets::load(presets_file, robot.model, view.scene().source_file, robot.name, robot.arm_joints.size()),
            arm_.jointValues(view.liveState()))
-  , gripper_joints_(robot.gripper_joints)
-  , arm_action_("/" + robot.name + "/arm_controller/follow_joint_trajectory", true)
+  , gripper_(gripperRange(view.world().model(), robot))
+  , arm_action_(robot.name)
   , gripper_action_("/" + robot.name + "/gripper_controller/gripper_cmd", true)
 {
-  if (!gripper_joints_.empty())
-  {
-    const auto& joint = view.world().model().joints()[view.world().model().jointIndex(gripper_joints_[0])];
-    // Robotiq knuckles close with the angle; Fetch's prismatic fingers open with the gap.
-    const bool prismatic = joint.type == vrrw_kinematics::JointModel::Type::Prismatic;
-    gripper_open_ = prismatic ? joint.upper : joint.lower;
-    gripper_closed_ = prismatic ? joint.lower : joint.upper;
-  }
   ros::NodeHandle nh("/" + robot_ + "/ghost");
   joint_states_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10, true);
-  services_.push_back(nh.advertiseService("set_joints", &GhostInterface::onSetJoints, this));
-  services_.push_back(nh.advertiseService("set_pose", &GhostInterface::onSetPose, this));
-  services_.push_back(nh.advertiseService("plan", &GhostInterface::onPlan, this));
-  services_.push_back(nh.advertiseService("execute", &GhostInterface::onExecute, this));
-  services_.push_back(nh.advertiseService<vrrw_msgs::GhostPreset::Request, vrrw_msgs::GhostPreset::Response>(
-      "preset", [this](auto& req, auto& res) {
-        const Outcome o = preset(req.name);
-        res.success = o.success, res.message = o.message;
-        return true;
-      }));
-  services_.push_back(
-      nh.advertiseService<vrrw_msgs::GhostSupportSurface::Request, vrrw_msgs::GhostSupportSurface::Response>(
-          "set_support_surface", [this](auto& req, auto& res) {
-            const Outcome o = supportSurface(req.name);
-            res.success = o.success, res.message = o.message;
-            return true;
-          }));
-  const auto trigger = [&](const std::string& name, std::function<Outcome()> request) {
-    services_.push_back(nh.advertiseService<std_srvs::Trigger::Request, std_srvs::Trigger::Response>(
-        name, [request](auto&, auto& res) {
-          const Outcome o = request();
-          res.success = o.success, res.message = o.message;
-          return true;
-        }));
-  };
-  trigger("add_waypoint", [this] { return addWaypoint(); });
-  trigger("clear_waypoints", [this] { return clearWaypoints(); });
-  trigger("reset", [this] { return reset(); });
-  trigger("gripper_open", [this] { return gripper(false); });
-  trigger("gripper_close", [this] { return gripper(true); });
+  advertise(nh, execution_queue);
+  // 10 Hz besides every change: a late subscriber, a recorder or rviz gets the ghost while nothing moves
   keepalive_ = nh.createTimer(ros::Duration(0.1), [this](const ros::TimerEvent&) {
     std::lock_guard<std::mutex> lock(view_.mutex());
     publish(ros::Time::now());
   });
 }
 
+void GhostInterface::advertise(ros::NodeHandle& nh, ros::CallbackQueue& execution_queue)
+{
+  services_.push_back(nh.advertiseService("set_joints", &GhostInterface::onSetJoints, this));
+  services_.push_back(nh.advertiseService("set_pose", &GhostInterface::onSetPose, this));
+  services_.push_back(nh.advertiseService("plan", &GhostInterface::onPlan, this));
+  services_.push_back(outcomeService<vrrw_msgs::GhostPreset>(nh, "preset", [this](auto& req) { return preset(req.name); }));
+  services_.push_back(outcomeService<vrrw_msgs::GhostSupportSurface>(
+      nh, "set_support_surface", [this](auto& req) { return supportSurface(req.name); }));
+  using Trigger = std_srvs::Trigger;
+  services_.push_back(outcomeService<Trigger>(nh, "add_waypoint", [this](auto&) { return addWaypoint(); }));
+  services_.push_back(outcomeService<Trigger>(nh, "clear_waypoints", [this](auto&) { return clearWaypoints(); }));
+  services_.push_back(outcomeService<Trigger>(nh, "reset", [this](auto&) { return reset(); }));
+  services_.push_back(outcomeService<Trigger>(nh, "gripper_open", [this](auto&) { return gripper(false); }));
+  services_.push_back(outcomeService<Trigger>(nh, "gripper_close", [this](auto&) { return gripper(true); }));
+  ros::NodeHandle execution(nh);
+  execution.setCallbackQueue(&execution_queue);
+  services_.push_back(execution.advertiseService("execute", &GhostInterface::onExecute, this));
+}
+
 void GhostInterface::ghostInto(Eigen::VectorXd& state)
 {
-  const double t = (ros::WallTime::now() - preview_start_).toSec();
-  const bool previewing = !preview_.points.empty() && t < preview_.duration() + 0.5;
-  state = arm_.withJointValues(state, previewing ? sample(preview_, t) : ghost_.joints());
+  // while a plan previews, the ghost shows where the robot will be on it (on ROS time: the controller's pace)
+  const std::optional<Eigen::VectorXd> previewed = preview_.at(ros::Time::now().toSec());
+  state = arm_.withJointValues(state, previewed ? *previewed : ghost_.joints());
 }
 
 void GhostInterface::publish(const ros::Time& stamp)
@@ -94,21 +75,18 @@ void GhostInterface::publish(const ros::Time& stamp)
   ghostInto(state);
   sensor_msgs::JointState msg;
   msg.header.stamp = stamp;
-  for (const std::string& joint : arm_.jointNames())
-  {
-    msg.name.push_back(joint);
-    msg.position.push_back(state[view_.world().model().variableIndex(joint)]);
-  }
+  msg.name = arm_.jointNames();
+  const Eigen::VectorXd q = arm_.jointValues(state);
+  msg.position.assign(q.data(), q.data() + q.size());
   joint_states_.publish(msg);
 }
 
-Outcome GhostInterface::drag(const Eigen::Isometry3d& target, const ros::Time& stamp, double max_jump,
-                             Eigen::Vector2d& residual)
+Outcome GhostInterface::drag(const Eigen::Isometry3d& target, const ros::Time& stamp, double max_jump)
 {
-  const Outcome outcome = ghost_.setPose(target, view_.liveState(), max_jump, &residual);
+  const Outcome outcome = ghost_.setPose(target, view_.liveState(), max_jump);
   if (outcome.success)
   {
-    preview_.points.clear();
+    preview_.stop();
     publish(stamp);
   }
   return outcome;
@@ -121,7 +99,7 @@ Outcome GhostInterface::moved(const Outcome& outcome, const std::string& request
     ROS_WARN_STREAM("/" << robot_ << "/ghost/" << request << ": " << outcome.message);
     return outcome;
   }
-  preview_.points.clear();
+  preview_.stop();
   publish(ros::Time::now());
   if (on_moved)
     on_moved(tcp());
@@ -138,17 +116,17 @@ bool GhostInterface::onSetJoints(vrrw_msgs::GhostSetJoints::Request& req, vrrw_m
 
 bool GhostInterface::onSetPose(vrrw_msgs::GhostSetPose::Request& req, vrrw_msgs::GhostSetPose::Response& res)
 {
-  std::lock_guard<std::mutex> lock(view_.mutex());
   Outcome o;
   try
   {
-    o = ghost_.setPose(view_.poseInWorld(req.pose), view_.liveState(), std::numeric_limits<double>::infinity());
+    const Eigen::Isometry3d target = view_.poseInWorld(req.pose);  // (without the mutex: it may look up tf)
+    std::lock_guard<std::mutex> lock(view_.mutex());
+    o = moved(ghost_.setPose(target, view_.liveState(), std::numeric_limits<double>::infinity()), "set_pose");
   }
   catch (const std::exception& e)
   {
     o = { false, e.what() };
   }
-  o = moved(o, "set_pose");
   res.success = o.success, res.message = o.message;
   return true;
 }
@@ -184,62 +162,57 @@ Outcome GhostInterface::reset()
 Outcome GhostInterface::plan(double time_limit, trajectory_msgs::JointTrajectory* trajectory,
                              const vrrw_kinematics::SpeedScaling& scaling, vrrw_kinematics::TimeProfile profile)
 {
-  std::lock_guard<std::mutex> lock(view_.mutex());
   if (!std::isfinite(time_limit))
     return { false, "time_limit: not finite" };
+  std::lock_guard<std::mutex> lock(view_.mutex());
+  // planning holds the mutex (the arm's planner and the collision world are shared): up to time_limit
   const vrrw_kinematics::TrajectoryResult result = ghost_.plan(view_.liveState(), time_limit, scaling, profile);
   if (!result.success)
   {
-    const std::string where = result.failed_waypoint >= 0 && result.failed_waypoint < int(ghost_.waypoints().size())
-                                  ? "waypoint " + std::to_string(result.failed_waypoint)
-                                  : (result.failed_waypoint < 0 ? "start" : "goal (the ghost)");
-    const Outcome o{ false, "plan failed at the " + where + ": " + result.message };
+    const int failed = result.failed_waypoint, waypoints = int(ghost_.waypoints().size());
+    // -1: the start, or the request as a whole (a scaling factor, a plan too long)
+    const std::string where = failed < 0 ? (result.code == vrrw_kinematics::ErrorCode::InvalidArgument ? "" : " at the start")
+                                         : failed < waypoints ? " at the waypoint " + std::to_string(failed)
+                                                              : " at the goal (the ghost)";
+    const Outcome o{ false, "plan failed" + where + ": " + result.message };
     ROS_WARN_STREAM("/" << robot_ << "/ghost/plan: " << o.message);
     return o;
   }
-  preview_ = result.trajectory;
-  preview_start_ = ros::WallTime::now();
+  preview_.play(result.trajectory, ros::Time::now().toSec());
   if (trajectory)
     *trajectory = vrrw_trajectory::toMsg(result.trajectory);
-  view_.event(robot_, "plan", std::to_string(ghost_.waypoints().size()) + " waypoints, " +
-                                  std::to_string(result.trajectory.duration()) + " s");
-  return { true, "planned " + std::to_string(result.trajectory.duration()) + " s through " +
-                     std::to_string(ghost_.waypoints().size()) + " waypoints" };
+  const std::string summary = std::to_string(result.trajectory.duration()) + " s through " +
+                              std::to_string(ghost_.waypoints().size()) + " waypoints";
+  view_.event(robot_, "plan", summary);
+  return { true, "planned " + summary };
 }
 
 Outcome GhostInterface::execute(control_msgs::FollowJointTrajectoryResult* result)
 {
-  control_msgs::FollowJointTrajectoryGoal goal;
+  // the plan is taken (and forgotten: executed once) under the mutex; the motion is waited for without it
+  trajectory_msgs::JointTrajectory plan;
   double duration = 0.0;
   {
     std::lock_guard<std::mutex> lock(view_.mutex());
     if (!ghost_.lastPlan())
       return { false, "execute: no plan (call plan first; a plan is executed once)" };
-    goal.trajectory = vrrw_trajectory::toMsg(*ghost_.lastPlan());
+    plan = vrrw_trajectory::toMsg(*ghost_.lastPlan());
     duration = ghost_.lastPlan()->duration();
     ghost_.clearPlan();
     view_.event(robot_, "execute", std::to_string(duration) + " s");
   }
-  if (!arm_action_.waitForServer(ros::Duration(2.0)))
-    return { false, "execute: /" + robot_ + "/arm_controller/follow_joint_trajectory is not running" };
-  arm_action_.sendGoal(goal);
-  if (!result)
-    return { true, "sent" };
-  if (!arm_action_.waitForResult(ros::Duration(duration + 30.0)))
-    return { false, "execute: no result within " + std::to_string(duration + 30.0) + " s" };
-  *result = *arm_action_.getResult();
-  const bool ok = result->error_code == control_msgs::FollowJointTrajectoryResult::SUCCESSFUL;
-  return { ok, ok ? "executed" : "execute: " + arm_action_.getState().toString() + ": " + result->error_string };
+  return result ? arm_action_.run(plan, duration, *result) : arm_action_.send(plan);
 }
 
 Outcome GhostInterface::gripper(bool close)
 {
-  if (gripper_joints_.empty())
+  if (!gripper_)
     return { false, robot_ + " has no gripper" };
-  if (!gripper_action_.waitForServer(ros::Duration(1.0)))
+  if (!gripper_action_.isServerConnected())
     return { false, "/" + robot_ + "/gripper_controller/gripper_cmd is not running" };
   control_msgs::GripperCommandGoal goal;
-  goal.command.position = close ? gripper_closed_ : gripper_open_;
+  goal.command.position = close ? gripper_->closed : gripper_->open;
+  std::lock_guard<std::mutex> lock(view_.mutex());  // (the simple client is not thread-safe; sending never waits)
   gripper_action_.sendGoal(goal);
   view_.event(robot_, close ? "gripper_close" : "gripper_open", "");
   return { true, close ? "closing" : "opening" };
@@ -259,7 +232,7 @@ Outcome GhostInterface::supportSurface(const std::string& name)
     return { false, "name: '" + name + "' has no collision geometry to set anything down on" };
   if (name.empty())
     ghost_.place_contact = nullptr;
-  else
+  else  // (called by the ghost while the mutex is held)
     ghost_.place_contact = [this, name](bool allow) { view_.allowPlaceContact(robot_, name, allow); };
   view_.event(robot_, "support_surface", name);
   return { true, name.empty() ? "no support surface" : "held objects may be set down on " + name };

@@ -1,29 +1,37 @@
 #pragma once
 #include <actionlib/client/simple_action_client.h>
-#include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <functional>
+#include <optional>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 #include <vrrw_msgs/GhostExecute.h>
 #include <vrrw_msgs/GhostPlan.h>
-#include <vrrw_msgs/GhostPreset.h>
 #include <vrrw_msgs/GhostSetJoints.h>
 #include <vrrw_msgs/GhostSetPose.h>
-#include <vrrw_msgs/GhostSupportSurface.h>
 
 #include <vrrw_interaction/ghost_robot.h>
+#include <vrrw_interaction/gripper.h>
+#include <vrrw_interaction/plan_preview.h>
 
+#include "arm_execution.h"
 #include "world_view.h"
 
 namespace vrrw_interaction
 {
 /// \brief One robot's ghost on ROS: /<robot>/ghost/joint_states, the ghost services, plan preview, execution
 /// through the arm controller's action and the gripper's GripperCommand.
+///
+/// Every member below the services is PROTECTED BY the world's mutex (view.mutex()) unless it says otherwise;
+/// the requests lock it themselves, the functions marked "(mutex held)" expect the caller to hold it.
 class GhostInterface
 {
 public:
-  GhostInterface(WorldView& view, const vrrw_scene::Robot& robot, const std::string& presets_file);
+  /// \brief `execution_queue`: where ghost/execute is served. An execute waits for the whole motion, so it
+  /// must not take one of the node's spinner threads (four in flight once left the node deaf: issue 21).
+  GhostInterface(WorldView& view, const vrrw_scene::Robot& robot, const std::string& presets_file,
+                 ros::CallbackQueue& execution_queue);
 
   const std::string& robot() const { return robot_; }
   std::vector<std::string> presetNames() const { return ghost_.presets().names(); }
@@ -33,13 +41,11 @@ public:
   std::function<void(const Eigen::Isometry3d& tcp)> on_moved;
 
   /// \brief Marker drag (mutex held): IK nearest the ghost, branch flips refused; publishes on success.
-  Outcome drag(const Eigen::Isometry3d& target, const ros::Time& stamp, double max_jump, Eigen::Vector2d& residual);
+  Outcome drag(const Eigen::Isometry3d& target, const ros::Time& stamp, double max_jump);
   /// \brief Ghost TCP in the world (mutex held).
   Eigen::Isometry3d tcp() { return ghost_.tcpPose(view_.liveState()); }
-  /// \brief Writes the ghost's arm (or the preview's) into `state` (mutex held).
+  /// \brief Writes the ghost's arm (or the previewed plan's) into `state` (mutex held).
   void ghostInto(Eigen::VectorXd& state);
-  /// \brief Publishes the ghost's joint_states stamped `stamp` (mutex held).
-  void publish(const ros::Time& stamp);
 
   // The requests behind the services and the marker's menu (each locks the mutex itself).
   Outcome preset(const std::string& name);
@@ -49,32 +55,33 @@ public:
   Outcome plan(double time_limit, trajectory_msgs::JointTrajectory* trajectory = nullptr,
                const vrrw_kinematics::SpeedScaling& scaling = {},
                vrrw_kinematics::TimeProfile profile = vrrw_kinematics::TimeProfile::TimeOptimal);
-  /// \brief Sends the last plan; waits for the action's result when `result` is given.
+  /// \brief Sends the last plan; with `result`, waits for the goal's own end (ArmExecution::run).
   Outcome execute(control_msgs::FollowJointTrajectoryResult* result = nullptr);
   Outcome gripper(bool close);
   /// \brief The scene object the held object may be set down on ("" = none); refused for an unknown one.
   Outcome supportSurface(const std::string& name);
 
 private:
+  void advertise(ros::NodeHandle& nh, ros::CallbackQueue& execution_queue);
   bool onSetJoints(vrrw_msgs::GhostSetJoints::Request& req, vrrw_msgs::GhostSetJoints::Response& res);
   bool onSetPose(vrrw_msgs::GhostSetPose::Request& req, vrrw_msgs::GhostSetPose::Response& res);
   bool onPlan(vrrw_msgs::GhostPlan::Request& req, vrrw_msgs::GhostPlan::Response& res);
   bool onExecute(vrrw_msgs::GhostExecute::Request& req, vrrw_msgs::GhostExecute::Response& res);
   /// \brief After a request that may have moved the ghost (mutex held): publish, tell the marker, log refusals.
   Outcome moved(const Outcome& outcome, const std::string& request);
+  /// \brief Publishes the ghost's joint_states stamped `stamp` (mutex held).
+  void publish(const ros::Time& stamp);
 
   WorldView& view_;
-  std::string robot_;
+  const std::string robot_;
   vrrw_kinematics::Arm arm_;
   GhostRobot ghost_;
-  std::vector<std::string> gripper_joints_;
-  double gripper_open_ = 0.0, gripper_closed_ = 0.0;
-  vrrw_trajectory::JointTrajectory preview_;
-  ros::WallTime preview_start_;
-  ros::Publisher joint_states_;
+  PlanPreview preview_;  ///< on ROS time: a plan previews at the pace the controller will run it
+  const std::optional<GripperRange> gripper_;
+  ros::Publisher joint_states_;  ///< (thread-safe by itself, as everything below)
   std::vector<ros::ServiceServer> services_;
   ros::Timer keepalive_;
-  actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> arm_action_;
+  ArmExecution arm_action_;
   actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper_action_;
 };
 }  // namespace vrrw_interaction

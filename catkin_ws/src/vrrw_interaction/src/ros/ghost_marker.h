@@ -33,18 +33,21 @@ private:
   void draw(const std::string& robot, const Eigen::Isometry3d& pose, const std::string& status);
   void buildMenu(GhostInterface& ghost, const std::function<void(const std::string&, bool)>& free_drive);
 
+  // Locks, in the order they may be taken: the world's mutex (solving a pose), then draw_mutex_; pending_mutex_
+  // is never held while taking another. The server calls onFeedback holding its own mutex, so the server is
+  // touched only by the solver thread (and the constructor), never from a callback that holds the world's.
   WorldView& view_;
-  std::map<std::string, GhostInterface*> ghosts_;
+  std::map<std::string, GhostInterface*> ghosts_;  ///< (set up once, read-only after)
   double period_, max_jump_;
-  interactive_markers::InteractiveMarkerServer server_;
-  std::map<std::string, std::unique_ptr<interactive_markers::MenuHandler>> menus_;
-  std::mutex draw_mutex_;  ///< guards the server's markers and status_ (the solver and services draw)
-  std::map<std::string, std::string> status_;
-  std::mutex pending_mutex_;  ///< guards pending_, moved_ and stop_; never held while taking another lock
-  std::condition_variable wake_;
-  std::map<std::string, Pending> pending_;
-  std::map<std::string, Eigen::Isometry3d> moved_;  ///< ghosts moved by a service or the menu
-  bool stop_ = false;
+  interactive_markers::InteractiveMarkerServer server_;  ///< PROTECTED BY draw_mutex_
+  std::map<std::string, std::unique_ptr<interactive_markers::MenuHandler>> menus_;  ///< PROTECTED BY draw_mutex_
+  std::mutex draw_mutex_;
+  std::map<std::string, std::string> status_;  ///< PROTECTED BY draw_mutex_: each marker's refusal text ("" green)
+  std::mutex pending_mutex_;
+  std::condition_variable wake_;            ///< (with pending_mutex_) the solver waits here for work
+  std::map<std::string, Pending> pending_;  ///< PROTECTED BY pending_mutex_: the newest pose per marker
+  std::map<std::string, Eigen::Isometry3d> moved_;  ///< PROTECTED BY pending_mutex_: ghosts moved by a service or the menu
+  bool stop_ = false;                               ///< PROTECTED BY pending_mutex_
   std::thread solver_;
 };
 }  // namespace vrrw_interaction

@@ -1,0 +1,255 @@
+#include "free_drive.h"
+
+#include <std_msgs/Bool.h>
+#include <std_srvs/SetBool.h>
+#include <tf2_eigen/tf2_eigen.h>
+#include <trajectory_msgs/JointTrajectory.h>
+#include <visualization_msgs/MarkerArray.h>
+
+namespace vrrw_interaction
+{
+namespace
+{
+std::string describe(const Eigen::Vector3d& p)
+{
+  char buffer[96];
+  std::snprintf(buffer, sizeof(buffer), "(%.3f, %.3f, %.3f)", p.x(), p.y(), p.z());
+  return buffer;
+}
+
+/// A hand in rviz: darker when closed, faint when its tracker went silent.
+visualization_msgs::Marker handMarker(const Hand& hand, const std::string& frame, int id, double radius, double now)
+{
+  visualization_msgs::Marker sphere;
+  sphere.header.frame_id = frame;
+  sphere.ns = "hands", sphere.id = id;
+  sphere.type = visualization_msgs::Marker::SPHERE;
+  sphere.pose = tf2::toMsg(hand.pose());
+  sphere.scale.x = sphere.scale.y = sphere.scale.z = 2 * radius;
+  sphere.color.a = hand.stale(now) ? 0.2f : 0.8f;
+  sphere.color.r = 0.95f, sphere.color.g = hand.closed() ? 0.3f : 0.75f, sphere.color.b = 0.5f;
+  sphere.lifetime = ros::Duration(0.5);
+  return sphere;
+}
+}  // namespace
+
+FreeDrive::FreeDrive(WorldView& view, std::vector<GhostInterface*> arms, double grab_distance, double hand_radius,
+                     const SpringGains& gains)
+  : view_(view), hand_radius_(hand_radius), physics_(gains)
+{
+  ros::NodeHandle nh;
+  rule_.max_distance = grab_distance;
+  rule_.movable_objects = view_.mode() == "physics";  // objects move only in physics; the table and the bin never
+  for (GhostInterface* arm : arms)
+  {
+    const std::string robot = arm->robot();
+    arms_[robot] = arm;
+    rule_.robots.insert(robot);
+    active_pubs_[robot] = nh.advertise<std_msgs::Bool>("/" + robot + "/free_drive_active", 1, true);
+    active_pubs_[robot].publish(std_msgs::Bool());
+    commands_[robot] = nh.advertise<trajectory_msgs::JointTrajectory>("/" + robot + "/arm_controller/command", 1);
+    services_.push_back(nh.advertiseService<std_srvs::SetBool::Request, std_srvs::SetBool::Response>(
+        "/" + robot + "/free_drive", [this, robot](auto& req, auto& res) {
+          const Outcome o = set(robot, req.data);
+          res.success = o.success, res.message = o.message;
+          return true;
+        }));
+  }
+  hand_markers_ = nh.advertise<visualization_msgs::MarkerArray>("/operator/hands", 1);
+  discover_timer_ = nh.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) { discoverHands(); });
+  tick_timer_ = nh.createWallTimer(ros::WallDuration(0.05), [this](const ros::WallTimerEvent&) { tick(); });
+}
+
+Outcome FreeDrive::set(const std::string& robot, bool on)
+{
+  if (!arms_.count(robot))
+    return { false, "robot: unknown robot '" + robot + "'" };
+  // Drives first: rigid holds the pose the arm is in, then the controller may take over (no jump).
+  if (view_.mode() == "physics")
+    if (const Outcome mode = physics_.setMode(robot, on); !mode.success)
+      return mode;
+  std::lock_guard<std::mutex> lock(view_.mutex());
+  std_msgs::Bool msg;
+  msg.data = on;
+  active_pubs_[robot].publish(msg);
+  if (on != bool(active_.count(robot)))
+    view_.event(robot, on ? "free_drive_on" : "free_drive_off", view_.mode());
+  on ? (void)active_.insert(robot) : (void)active_.erase(robot);
+  return { true, std::string("free-drive ") + (on ? "on" : "off") };
+}
+
+void FreeDrive::discoverHands()
+{
+  ros::master::V_TopicInfo topics;
+  if (!ros::master::getTopics(topics))
+    return;
+  ros::NodeHandle nh;
+  const std::string prefix = "/operator/", suffix = "/pose";
+  for (const auto& topic : topics)
+  {
+    const std::string& name = topic.name;
+    if (name.rfind(prefix, 0) != 0 || name.size() <= prefix.size() + suffix.size() ||
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
+    const std::string id = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    std::lock_guard<std::mutex> lock(view_.mutex());
+    if (id.find('/') != std::string::npos || trackers_.count(id))
+      continue;
+    auto tracker = std::make_unique<Tracker>(id);
+    Tracker* t = tracker.get();
+    t->pose = nh.subscribe<geometry_msgs::PoseStamped>(name, 10, [this, t](const auto& msg) { onPose(*t, *msg); });
+    t->grip = nh.subscribe<std_msgs::Float64>(prefix + id + "/grip", 10, [this, t](const auto& msg) { onGrip(*t, *msg); });
+    trackers_[id] = std::move(tracker);
+    ROS_INFO_STREAM("hand '" << id << "' on " << name);
+  }
+}
+
+void FreeDrive::onPose(Tracker& tracker, const geometry_msgs::PoseStamped& msg)
+{
+  Eigen::Isometry3d pose;
+  try
+  {
+    pose = view_.poseInWorld(msg, "/operator/" + tracker.hand.id() + "/pose");  // (before the mutex: tf)
+  }
+  catch (const std::exception& e)
+  {
+    ROS_WARN_STREAM_THROTTLE(1.0, e.what());
+    return;
+  }
+  std::lock_guard<std::mutex> lock(view_.mutex());
+  tracker.hand.setPose(pose, ros::WallTime::now().toSec());
+  if (tracker.hand.held())
+    return follow(tracker);
+  if (view_.mode() != "physics")
+    return;
+  // the open hand pushes, once clear of what it let go (a sphere appearing inside a link would kick it)
+  if (!tracker.pushes)
+    tracker.pushes = clearOfMovingBodies(view_.world(), view_.scene(), view_.liveState(), pose.translation(),
+                                         hand_radius_ + 0.01);
+  physics_.hand(tracker.hand.id(), pose, tracker.pushes ? hand_radius_ : 0.0);
+}
+
+void FreeDrive::onGrip(Tracker& tracker, const std_msgs::Float64& msg)
+{
+  if (const std::string error = gripError(msg.data); !error.empty())
+  {
+    ROS_WARN_STREAM_THROTTLE(1.0, "/operator/" << tracker.hand.id() << "/grip: data: " << error << " (ignored)");
+    return;
+  }
+  std::optional<GrabTarget> taken, released;
+  {
+    std::lock_guard<std::mutex> lock(view_.mutex());
+    const Hand::GripChange change = tracker.hand.setGrip(msg.data);
+    if (change == Hand::GripChange::Close && !tracker.hand.held() && tracker.hand.hasPose())
+      taken = grab(tracker);
+    else if (change == Hand::GripChange::Open && tracker.hand.held())
+      released = release(tracker, "opened");
+  }
+  if (view_.mode() != "physics")
+    return;
+  if (taken)
+    attachSpring(tracker, *taken);
+  if (released)
+    physics_.release(tracker.spring, released->body);
+}
+
+std::optional<GrabTarget> FreeDrive::grab(Tracker& tracker)
+{
+  const std::optional<GrabTarget> target =
+      handGrab(view_.world(), view_.scene(), view_.liveState(), tracker.hand.pose().translation(), rule_);
+  if (!target)
+    return target;
+  const vrrw_kinematics::RobotModel& model = view_.world().model();
+  tracker.link_at_grab = target->object ? Eigen::Isometry3d::Identity()
+                                        : model.relativeTransform(view_.liveState(), model.links()[0].name, target->body);
+  if (!target->robot.empty())
+    tracker.tcp_at_grab = tcpPose(arms_[target->robot]->arm(), view_.liveState());
+  tracker.hand.hold(*target);
+  tracker.pushes = false;
+  physics_.hand(tracker.hand.id(), tracker.hand.pose(), 0.0);
+  view_.event(target->robot, "grab", "hand " + tracker.hand.id() + " grabbed " + target->body + " at " +
+                                         describe(target->point_in_world));
+  return target;
+}
+
+void FreeDrive::attachSpring(Tracker& tracker, const GrabTarget& target)
+{
+  // a link is held by position and orientation (the link's own at the grab: no pull), an object by position
+  Eigen::Isometry3d at;
+  {
+    std::lock_guard<std::mutex> lock(view_.mutex());
+    at = tracker.link_at_grab;
+  }
+  at.translation() = target.point_in_world;
+  if (physics_.attach(tracker.spring, target.body, target.point_in_body, at, !target.object))
+    return;
+  std::lock_guard<std::mutex> lock(view_.mutex());
+  if (tracker.hand.held() && tracker.hand.held()->body == target.body)
+    release(tracker, "physics refused the spring");
+}
+
+GrabTarget FreeDrive::release(Tracker& tracker, const std::string& why)
+{
+  const GrabTarget held = *tracker.hand.held();
+  tracker.hand.release();
+  view_.event(held.robot, "release", "hand " + tracker.hand.id() + " released " + held.body + " (" + why + ")");
+  return held;
+}
+
+void FreeDrive::follow(Tracker& tracker)
+{
+  const GrabTarget& held = *tracker.hand.held();
+  if (view_.mode() == "physics")
+  {
+    Eigen::Isometry3d target = tracker.hand.carried(tracker.link_at_grab);
+    target.translation() = tracker.hand.heldPointTarget();
+    physics_.moveTarget(tracker.spring, target);
+    return;
+  }
+  // fake mode: the arm in free-drive follows the hand kinematically, at most 50 commands a second
+  if (held.robot.empty() || !active_.count(held.robot) || ros::WallTime::now() - tracker.last_command < ros::WallDuration(0.02))
+    return;
+  vrrw_kinematics::Arm& arm = arms_[held.robot]->arm();
+  const vrrw_kinematics::IkResult ik = armFollowingHand(arm, tracker.hand, tracker.tcp_at_grab, view_.liveState());
+  if (!ik.success)
+  {
+    ROS_WARN_STREAM_THROTTLE(1.0, held.robot << " free-drive: hand " << tracker.hand.id() << ": " << ikRefusal(ik));
+    return;
+  }
+  trajectory_msgs::JointTrajectory command;
+  command.joint_names = arm.jointNames();
+  command.points.resize(1);
+  command.points[0].positions.assign(ik.q.data(), ik.q.data() + ik.q.size());
+  command.points[0].time_from_start = ros::Duration(0.05);
+  commands_[held.robot].publish(command);
+  tracker.last_command = ros::WallTime::now();
+}
+
+void FreeDrive::tick()
+{
+  std::vector<std::pair<std::string, std::string>> springs;  // released: (spring, body)
+  {
+    std::lock_guard<std::mutex> lock(view_.mutex());
+    visualization_msgs::MarkerArray markers;
+    const double now = ros::WallTime::now().toSec();
+    for (auto& [id, tracker] : trackers_)
+    {
+      if (tracker->hand.held() && tracker->hand.stale(now))
+        springs.emplace_back(tracker->spring, release(*tracker, "stale: no pose for 0.5 s").body);
+      if (tracker->pushes && tracker->hand.stale(now, 0.4))  // take the sphere away before physics has to
+      {
+        physics_.hand(id, tracker->hand.pose(), 0.0);
+        tracker->pushes = false;
+      }
+      if (tracker->hand.hasPose())
+        markers.markers.push_back(handMarker(tracker->hand, view_.world().model().links()[0].name,
+                                             int(markers.markers.size()), hand_radius_, now));
+    }
+    if (!markers.markers.empty())  // (recordings keep /operator/*: no empty arrays at 20 Hz)
+      hand_markers_.publish(markers);
+  }
+  if (view_.mode() == "physics")
+    for (const auto& [spring, body] : springs)
+      physics_.release(spring, body);
+}
+}  // namespace vrrw_interaction

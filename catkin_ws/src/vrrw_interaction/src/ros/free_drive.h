@@ -1,0 +1,70 @@
+#pragma once
+#include <map>
+#include <memory>
+#include <ros/ros.h>
+#include <set>
+#include <std_msgs/Float64.h>
+#include <vrrw_interaction/grab_target.h>
+#include <vrrw_interaction/hand.h>
+
+#include "ghost_interface.h"
+#include "physics_operator.h"
+
+namespace vrrw_interaction
+{
+/// \brief Free-drive: /<robot>/free_drive switches an arm compliant (physics) or hand-following (fake) and back
+/// to rigid holding its pose; /<robot>/free_drive_active says which. Any /operator/<hand>/pose + grip is a
+/// hand: closing it grabs what handGrab() finds (an operator spring in physics; IK of the arm toward the carried
+/// TCP in fake mode), opening or a stale pose releases, the open hand pushes through /physics/hand.
+///
+/// Every member but the ROS handles is PROTECTED BY the world's mutex (view.mutex()); decisions are taken
+/// under it, the physics node's services are called after it is released.
+class FreeDrive
+{
+public:
+  FreeDrive(WorldView& view, std::vector<GhostInterface*> arms, double grab_distance, double hand_radius,
+            const SpringGains& gains);
+  /// \brief Free-drive of `robot` on or off (takes the mutex itself).
+  Outcome set(const std::string& robot, bool on);
+
+private:
+  /// \brief One /operator/<id>/ hand and what it holds.
+  struct Tracker
+  {
+    explicit Tracker(const std::string& id) : hand(id), spring("hand_" + id) {}
+    Hand hand;
+    const std::string spring;  ///< its operator spring's id in physics
+    ros::Subscriber pose, grip;
+    Eigen::Isometry3d tcp_at_grab = Eigen::Isometry3d::Identity();   ///< fake mode: the held arm's TCP
+    Eigen::Isometry3d link_at_grab = Eigen::Isometry3d::Identity();  ///< the held link (physics: its orientation)
+    bool pushes = false;        ///< physics: the open hand is a sphere (off until clear of what it let go)
+    ros::WallTime last_command;  ///< fake mode: the last arm command it caused
+  };
+  void discoverHands();
+  void onPose(Tracker& tracker, const geometry_msgs::PoseStamped& msg);
+  void onGrip(Tracker& tracker, const std_msgs::Float64& msg);
+  /// \brief What the closing hand takes, taken (mutex held); none when it closed on nothing.
+  std::optional<GrabTarget> grab(Tracker& tracker);
+  /// \brief Physics: the spring of a grab just taken (mutex not held); lets go again when physics refuses it.
+  void attachSpring(Tracker& tracker, const GrabTarget& target);
+  /// \brief Lets go (mutex held); what it held, whose spring physics_ then releases without the mutex.
+  GrabTarget release(Tracker& tracker, const std::string& why);
+  /// \brief The held body follows the hand (mutex held): a spring target, or in fake mode an arm command.
+  void follow(Tracker& tracker);
+  /// \brief 20 Hz: stale hands let go and stop pushing; the hands' markers.
+  void tick();
+
+  WorldView& view_;
+  std::map<std::string, GhostInterface*> arms_;  ///< (set up once, read-only after)
+  GrabRule rule_;
+  const double hand_radius_;
+  PhysicsOperator physics_;  ///< (thread-safe by itself)
+  std::set<std::string> active_;                               ///< robots in free-drive
+  std::map<std::string, std::unique_ptr<Tracker>> trackers_;   ///< by hand id
+  std::map<std::string, ros::Publisher> active_pubs_, commands_;
+  std::vector<ros::ServiceServer> services_;
+  ros::Publisher hand_markers_;
+  ros::WallTimer discover_timer_;  ///< wall clock, as below: hands are found in the person's time
+  ros::WallTimer tick_timer_;  ///< wall clock: a hand's tracker goes silent in the person's time
+};
+}  // namespace vrrw_interaction

@@ -1,0 +1,137 @@
+#include "world_view.h"
+
+#include <tf2_eigen/tf2_eigen.h>
+#include <vrrw_kinematics/ik_solver.h>
+#include <vrrw_kinematics/scene_state.h>
+#include <vrrw_msgs/Event.h>
+
+namespace vrrw_interaction
+{
+WorldView::WorldView(ros::NodeHandle& nh, const vrrw_scene::Scene& scene, std::string mode)
+  : scene_(scene)
+  , mode_(std::move(mode))
+  , world_(vrrw_kinematics::CollisionWorld::fromScene(scene_))
+  , held_(world_, scene_)
+  , listener_(tf_)
+{
+  world_.loadOrComputeAllowedCollisions(scene_.cache_dir);
+  live_ = vrrw_kinematics::initialState(world_.model(), scene_);
+  joint_states_ = nh.subscribe("/joint_states", 10, &WorldView::onJointStates, this);
+  events_ = nh.advertise<vrrw_msgs::Event>("/operator/events", 100);
+  if (mode_ == "physics")
+    contacts_ = nh.subscribe("/physics/contacts", 10, &WorldView::onContacts, this);
+  objects_timer_ = nh.createTimer(ros::Duration(0.1), [this](const ros::TimerEvent&) { refreshObjects(); });
+}
+
+void WorldView::onJointStates(const sensor_msgs::JointState& msg)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (std::size_t i = 0; i < msg.name.size() && i < msg.position.size(); ++i)
+    if (const int v = world_.model().variableIndex(msg.name[i]); v >= 0 && std::isfinite(msg.position[i]))
+      live_[v] = msg.position[i];
+}
+
+void WorldView::refreshObjects()
+{
+  const std::string& root = world_.model().links()[0].name;
+  std::map<std::string, Eigen::Isometry3d> poses;  // looked up before taking the mutex
+  for (const vrrw_scene::Object& object : scene_.objects)
+    try
+    {
+      if (!object.fixed)
+        poses[object.name] = tf2::transformToEigen(tf_.lookupTransform(root, object.name, ros::Time(0)));
+    }
+    catch (const tf2::TransformException&)
+    {
+    }
+  std::vector<HeldEvent> events;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& [name, pose] : poses)
+      if (const int b = world_.bodyIndex(name); b >= 0 && world_.bodies()[b].link < 0)
+        world_.setObjectPose(name, pose);
+    if (mode_ != "physics")  // physics decides by the contacts (onContacts)
+      for (const vrrw_scene::Object& object : scene_.objects)
+        if (!object.fixed)
+          for (HeldEvent& e : held_.update(object.name, held_.heldByClosedGripper(object.name, live_), live_,
+                                           ros::Time::now().toSec()))
+            events.push_back(std::move(e));
+    held_.releaseLifted(live_);
+  }
+  publish(events);
+}
+
+void WorldView::onContacts(const vrrw_physics::Contacts& msg)
+{
+  std::vector<BodyContact> contacts;
+  for (const vrrw_physics::Contact& c : msg.contacts)
+    contacts.push_back({ c.body_a, c.body_b, Eigen::Vector3d(c.position.x, c.position.y, c.position.z), c.normal_force });
+  std::vector<HeldEvent> events;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const vrrw_scene::Object& object : scene_.objects)
+      if (!object.fixed)
+        for (HeldEvent& e : held_.update(object.name, held_.squeezedBy(object.name, contacts, live_), live_,
+                                         ros::Time::now().toSec()))
+          events.push_back(std::move(e));
+  }
+  publish(events);
+}
+
+void WorldView::publish(const std::vector<HeldEvent>& events)
+{
+  for (const HeldEvent& e : events)
+    event(e.robot, e.kind, e.detail);
+}
+
+Eigen::Isometry3d WorldView::poseInWorld(const geometry_msgs::PoseStamped& pose, const std::string& field)
+{
+  const auto& p = pose.pose.position;
+  const auto& o = pose.pose.orientation;
+  Eigen::Isometry3d local;
+  try
+  {
+    local = vrrw_kinematics::poseFromQuaternion(Eigen::Vector3d(p.x, p.y, p.z), Eigen::Vector4d(o.x, o.y, o.z, o.w));
+  }
+  catch (const std::exception& e)
+  {
+    throw std::runtime_error(field + ".pose: " + e.what());
+  }
+  const std::string& root = world_.model().links()[0].name;  // (the model never changes: no lock)
+  const std::string& frame = pose.header.frame_id;
+  if (frame.empty() || frame == root)
+    return local;
+  for (const vrrw_kinematics::LinkModel& link : world_.model().links())
+    if (link.name == frame)  // a scene link at the live state
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      return world_.model().relativeTransform(live_, root, frame) * local;
+    }
+  try
+  {
+    // as tf has it now: a frame that is not there is refused at once (a stream in an unknown frame at 100 Hz
+    // waiting 0.1 s a message kept the world's requests waiting: issue 21)
+    return tf2::transformToEigen(tf_.lookupTransform(root, frame, ros::Time(0))) * local;
+  }
+  catch (const tf2::TransformException& e)
+  {
+    throw std::runtime_error(field + ".header.frame_id: unknown frame '" + frame + "' (" + e.what() + ")");
+  }
+}
+
+void WorldView::allowPlaceContact(const std::string& robot, const std::string& surface, bool allow)
+{
+  held_.allowPlaceContact(robot, surface, allow);
+}
+
+void WorldView::event(const std::string& robot, const std::string& kind, const std::string& detail)
+{
+  vrrw_msgs::Event msg;
+  msg.header.stamp = ros::Time::now();
+  msg.source = "interaction";
+  msg.robot = robot;
+  msg.kind = kind;
+  msg.detail = detail;
+  events_.publish(msg);
+}
+}  // namespace vrrw_interaction

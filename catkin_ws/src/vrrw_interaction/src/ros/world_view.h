@@ -1,0 +1,67 @@
+#pragma once
+#include <Eigen/Geometry>
+#include <geometry_msgs/PoseStamped.h>
+#include <mutex>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <string>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+#include <vrrw_interaction/held_objects.h>
+#include <vrrw_kinematics/collision_world.h>
+#include <vrrw_physics/Contacts.h>
+#include <vrrw_scene/scene.h>
+
+namespace vrrw_interaction
+{
+/// \brief What every arm's ghost, marker and hand share: the scene, its collision world with the live joint
+/// state, object poses and held objects, tf, and the event stream (/operator/events).
+///
+/// Threads: the node's spinner threads, the marker solver and the execution threads all come through here.
+/// mutex() guards the collision world, the live state and the held objects, and by convention every Arm,
+/// GhostRobot and Hand of the node (their solvers keep state between calls). It is held only for computation:
+/// never while waiting for tf, a service or an action.
+class WorldView
+{
+public:
+  WorldView(ros::NodeHandle& nh, const vrrw_scene::Scene& scene, std::string mode);
+
+  const vrrw_scene::Scene& scene() const { return scene_; }
+  /// \brief The collision world (mutex held).
+  const vrrw_kinematics::CollisionWorld& world() const { return world_; }
+  /// \brief fake, physics or none: how the robots move (free-drive differs).
+  const std::string& mode() const { return mode_; }
+  /// \brief The world's variables at the last /joint_states (mutex held).
+  const Eigen::VectorXd& liveState() const { return live_; }
+  std::mutex& mutex() { return mutex_; }
+
+  /// \brief A stamped pose in the world. A scene link's pose is taken at the live state (this locks the mutex
+  /// for it: call it without holding the mutex); any other frame from tf as it is now, never waiting. Throws
+  /// std::runtime_error "<field>.header.frame_id: ..." or "<field>.pose: ..." (one line naming the field).
+  Eigen::Isometry3d poseInWorld(const geometry_msgs::PoseStamped& pose, const std::string& field = "pose");
+  /// \brief While `allow`: every object `robot` holds may touch the scene object `surface` (mutex held).
+  void allowPlaceContact(const std::string& robot, const std::string& surface, bool allow);
+  /// \brief One vrrw_msgs/Event on /operator/events.
+  void event(const std::string& robot, const std::string& kind, const std::string& detail);
+
+private:
+  void onJointStates(const sensor_msgs::JointState& msg);
+  /// \brief Physics: who holds what by the fingers' contacts (HeldObjects::squeezedBy).
+  void onContacts(const vrrw_physics::Contacts& msg);
+  /// \brief 10 Hz: free objects where tf has them; fake mode: who holds what by the closed grippers.
+  void refreshObjects();
+  void publish(const std::vector<HeldEvent>& events);
+
+  const vrrw_scene::Scene scene_;
+  const std::string mode_;
+  std::mutex mutex_;
+  vrrw_kinematics::CollisionWorld world_;  ///< PROTECTED BY mutex_
+  Eigen::VectorXd live_;                   ///< PROTECTED BY mutex_
+  HeldObjects held_;                       ///< PROTECTED BY mutex_ (it changes world_'s attachments)
+  tf2_ros::Buffer tf_;                     ///< thread-safe by itself: looked up without mutex_
+  tf2_ros::TransformListener listener_;
+  ros::Subscriber joint_states_, contacts_;
+  ros::Publisher events_;
+  ros::Timer objects_timer_;
+};
+}  // namespace vrrw_interaction
