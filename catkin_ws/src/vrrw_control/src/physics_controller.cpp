@@ -15,6 +15,7 @@ public:
                   std::function<ros::Time()> clock) override
   {
     ros::NodeHandle pnh(nh, "controller");  // /<robot>/controller/*: controller_node's private parameters
+    pnh.setParam("mode", "physics");         // as controller_node's ~mode: tools read which mode runs
     const RobotDescription description = describeRobot(scene, robot, pnh);
     joints_ = RobotControllers::joints(description);
     auto hardware = std::make_unique<PhysicsRobot>(joints_);
