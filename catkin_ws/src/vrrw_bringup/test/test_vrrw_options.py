@@ -41,7 +41,7 @@ class Refusals(unittest.TestCase):
         os.makedirs(os.path.join(out, 'frames'))
         with open(os.path.join(out, 'workspace.log'), 'w') as f:
             f.write('an earlier run\n')
-        self.refused('vrrw: demo: --trials: -1 is not a whole number >= 1', 'demo', '--out', out, '--trials', '-1')
+        self.refused('vrrw: demo: --trials: -1 is not a whole number >= 0', 'demo', '--out', out, '--trials', '-1')
         self.refused('vrrw: demo: --trials: 2.5 is not a whole number >= 1', 'demo', '--out', out, '--trials', '2.5')
         self.refused("vrrw: demo: --trials: 'many' is not a whole number >= 1", 'demo', '--trials', 'many')
         self.refused('vrrw: demo: --trials: 5000 outside [1, 1000]', 'demo', '--out', out, '--trials', '5000')
