@@ -42,9 +42,9 @@ class Refusals(unittest.TestCase):
         with open(os.path.join(out, 'workspace.log'), 'w') as f:
             f.write('an earlier run\n')
         self.refused('vrrw: demo: --trials: -1 is not a whole number >= 0', 'demo', '--out', out, '--trials', '-1')
-        self.refused('vrrw: demo: --trials: 2.5 is not a whole number >= 1', 'demo', '--out', out, '--trials', '2.5')
-        self.refused("vrrw: demo: --trials: 'many' is not a whole number >= 1", 'demo', '--trials', 'many')
-        self.refused('vrrw: demo: --trials: 5000 outside [1, 1000]', 'demo', '--out', out, '--trials', '5000')
+        self.refused('vrrw: demo: --trials: 2.5 is not a whole number >= 0', 'demo', '--out', out, '--trials', '2.5')
+        self.refused("vrrw: demo: --trials: 'many' is not a whole number >= 0", 'demo', '--trials', 'many')
+        self.refused('vrrw: demo: --trials: 5000 outside [0, 1000]', 'demo', '--out', out, '--trials', '5000')
         self.refused('vrrw: demo: --trials: needs a value', 'demo', '--out', out, '--trials')
         self.refused('vrrw: demo: --trials: needs a value', 'demo', '--trials', '--quick')
         self.refused('vrrw: demo: --seed: -3 is not a whole number >= 0', 'demo', '--seed', '-3')
