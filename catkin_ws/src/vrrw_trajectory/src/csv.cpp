@@ -13,6 +13,21 @@ namespace vrrw_trajectory
 namespace
 {
 const char* const kVelocitySuffix = "_vel";
+/// Characters of a cell an error message quotes; a longer cell is cut and its length said.
+constexpr std::size_t kQuotedCharacters = 32;
+
+/// A cell as an error message shows it: at most kQuotedCharacters of it.
+std::string shown(const std::string& cell)
+{
+  if (cell.size() <= kQuotedCharacters)
+    return cell;
+  return cell.substr(0, kQuotedCharacters) + "... (" + std::to_string(cell.size()) + " characters)";
+}
+
+std::string quoted(const std::string& cell)
+{
+  return "'" + shown(cell) + "'";
+}
 
 std::string trim(const std::string& text)
 {
@@ -80,7 +95,7 @@ public:
       for (std::size_t e = 1 + 2 * n; e < row.size(); ++e)
         trajectory.extras.back().push_back(number(row[e], header[e]));
       if (!trajectory.points.empty() && !(point.time > trajectory.points.back().time))
-        fail(line_number_, "time " + row[0] + " is not after the previous time " +
+        fail(line_number_, "time " + shown(row[0]) + " is not after the previous time " +
                                formatNumber(trajectory.points.back().time) + " (times must strictly increase)");
       trajectory.points.push_back(std::move(point));
     }
@@ -91,12 +106,21 @@ public:
   }
 
 private:
+  /// The next non-blank row's cells; false at the end. A line is read only up to kMaxLineLength, so a
+  /// file that is one huge line costs that much memory, not its size.
   bool nextRow(std::vector<std::string>& cells)
   {
-    std::string line;
-    while (std::getline(in_, line))
+    while (in_.peek() != std::char_traits<char>::eof())
     {
       ++line_number_;
+      if (++rows_ > kMaxRows)
+        fail(line_number_, "more than " + std::to_string(kMaxRows) + " rows (the reader's bound)");
+      in_.getline(line_.data(), static_cast<std::streamsize>(line_.size()));
+      if (in_.fail() && !in_.eof())
+        fail(line_number_, "longer than " + std::to_string(kMaxLineLength) +
+                               " characters: not a row of a trajectory (a row of joint values has a few hundred)");
+      in_.clear(in_.rdstate() & std::ios::eofbit);
+      const std::string line(line_.data());
       if (!trim(line).empty())
       {
         cells = splitCells(line);
@@ -109,7 +133,8 @@ private:
   std::vector<std::string> jointNames(const std::vector<std::string>& header, std::size_t line) const
   {
     if (header[0] != "t" && header[0] != "time")
-      fail(line, "header must start with 't' (time in seconds), found '" + header[0] + "' (is the header row missing?)");
+      fail(line, "header must start with 't' (time in seconds), found " + quoted(header[0]) +
+                     " (is the header row missing?)");
     const std::size_t n = jointCount(header);
     if (n == 0)
       fail(line, "wrong column count: header has " + std::to_string(header.size()) +
@@ -121,17 +146,17 @@ private:
       if (names[j].empty())
         fail(line, "header column " + std::to_string(j + 2) + " has no joint name");
       if (!seen.insert(names[j]).second)
-        fail(line, "joint '" + names[j] + "' appears twice in the header");
+        fail(line, "joint " + quoted(names[j]) + " appears twice in the header");
       const std::string& velocity = header[1 + n + j];
       if (velocity != names[j] + kVelocitySuffix && velocity != seedVelocityName(names[j]))
-        fail(line, "header column " + std::to_string(n + j + 2) + " is '" + velocity + "', expected '" + names[j] +
-                       kVelocitySuffix + "' (velocity of joint '" + names[j] + "')");
+        fail(line, "header column " + std::to_string(n + j + 2) + " is " + quoted(velocity) + ", expected " +
+                       quoted(names[j] + kVelocitySuffix) + " (velocity of joint " + quoted(names[j]) + ")");
     }
     std::set<std::string> extras;
     for (std::size_t e = 1 + 2 * n; e < header.size(); ++e)
       if (header[e].empty() || seen.count(header[e]) || !extras.insert(header[e]).second)
-        fail(line, "header column " + std::to_string(e + 1) + " ('" + header[e] +
-                       "') must be a new, non-empty name (an extra column after the velocities)");
+        fail(line, "header column " + std::to_string(e + 1) + " (" + quoted(header[e]) +
+                       ") must be a new, non-empty name (an extra column after the velocities)");
     return names;
   }
 
@@ -163,11 +188,11 @@ private:
       ++begin;
     const auto result = std::from_chars(begin, end, value);
     if (result.ec == std::errc::result_out_of_range && result.ptr == end)
-      fail(line_number_, "column '" + column + "': '" + cell + "' is out of range");
+      fail(line_number_, "column " + quoted(column) + ": " + quoted(cell) + " is out of range");
     if (cell.empty() || result.ec != std::errc() || result.ptr != end)
-      fail(line_number_, "column '" + column + "': '" + cell + "' is not a number");
+      fail(line_number_, "column " + quoted(column) + ": " + quoted(cell) + " is not a number");
     if (!std::isfinite(value))
-      fail(line_number_, "column '" + column + "': '" + cell + "' is not finite");
+      fail(line_number_, "column " + quoted(column) + ": " + quoted(cell) + " is not finite");
     return value;
   }
 
@@ -179,6 +204,8 @@ private:
   std::istream& in_;
   std::string source_;
   std::size_t line_number_ = 0;
+  std::size_t rows_ = 0;
+  std::vector<char> line_ = std::vector<char>(kMaxLineLength + 1);  ///< getline's buffer: the bound plus '\0'
 };
 
 void checkWritable(const JointTrajectory& trajectory, const std::string& source)

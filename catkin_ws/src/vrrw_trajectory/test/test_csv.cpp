@@ -196,3 +196,51 @@ TEST(Csv, ExtraColumnsAfterTheVelocitiesRoundTrip)
             "demo.csv:1: header column 4 ('a') must be a new, non-empty name (an extra column after the velocities)");
   EXPECT_EQ(errorOf("t,a,a_vel,g\n0,1,2,3\n1,1,2\n"), "demo.csv:3: wrong column count: 3 cells, the header has 4");
 }
+
+namespace
+{
+/// An endless input: "t,a,a_vel\n" and then one line that never ends (a 1 GB one-line file, or worse).
+class EndlessLine : public std::streambuf
+{
+public:
+  EndlessLine()
+  {
+    std::fill(std::begin(block_), std::end(block_), '7');
+    std::copy(header_.begin(), header_.end(), block_);
+    setg(block_, block_, block_ + sizeof(block_));
+  }
+
+private:
+  int_type underflow() override
+  {
+    std::fill(std::begin(block_), std::end(block_), '7');
+    setg(block_, block_, block_ + sizeof(block_));
+    return traits_type::to_int_type(block_[0]);
+  }
+  const std::string header_ = "t,a,a_vel\n";
+  char block_[4096];
+};
+}  // namespace
+
+TEST(Csv, AnEndlessLineStopsAtTheBoundAndQuotesAFewCharacters)
+{
+  EndlessLine endless;
+  std::istream in(&endless);
+  try
+  {
+    readCsv(in, "huge.csv");
+    FAIL() << "no error";
+  }
+  catch (const TrajectoryError& e)
+  {
+    EXPECT_STREQ(e.what(), "huge.csv:2: longer than 65536 characters: not a row of a trajectory (a row of joint values "
+                           "has a few hundred)");
+  }
+  // a long cell on a line within the bound is quoted by its first 32 characters only
+  const std::string cell(60000, 'x');
+  EXPECT_EQ(errorOf(std::string(kHeader) + "0,1,2,3,4\n0.1,1," + cell + ",3,4\n"),
+            "demo.csv:3: column 'b': '" + std::string(32, 'x') + "... (60000 characters)' is not a number");
+  EXPECT_EQ(errorOf("t," + cell + ",b_vel\n0,1,2\n1,1,2\n"),
+            "demo.csv:1: header column 3 is 'b_vel', expected '" + std::string(32, 'x') +
+                "... (60004 characters)' (velocity of joint '" + std::string(32, 'x') + "... (60000 characters)')");
+}

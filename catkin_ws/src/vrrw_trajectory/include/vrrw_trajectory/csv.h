@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <iosfwd>
 #include <string>
 
@@ -21,7 +22,13 @@ namespace vrrw_trajectory
 /// - Then one row per sample: time in seconds, strictly increasing; every cell a finite number.
 /// - At least two samples. Blank lines are ignored; cells may carry surrounding spaces; CRLF is fine.
 /// - Written with the shortest decimal that reads back to the identical double.
-/// Every error is a TrajectoryError whose message is one line: "FILE:LINE: reason".
+/// Every error is a TrajectoryError whose message is one line: "FILE:LINE: reason"; it quotes at most
+/// 32 characters of a cell. The input is read a line at a time, each line up to kMaxLineLength.
+
+/// \brief The longest line read (a row of 7 joints and their velocities is about 400 characters).
+constexpr std::size_t kMaxLineLength = 65536;
+/// \brief The most lines read: an hour at 1 kHz is 3.6 million.
+constexpr std::size_t kMaxRows = 10000000;
 
 /// \brief Reads a trajectory CSV file (positions and velocities; no accelerations).
 JointTrajectory readCsv(const std::string& path);
