@@ -278,6 +278,9 @@ void ArmActionServer::update(const ros::Time& now)
         return finish(Result::GOAL_TOLERANCE_VIOLATED, c.message);
     }
   }
+  else if (phase_ == Phase::Relaying && !relay_->connected())
+    finish(Result::PATH_TOLERANCE_VIOLATED, "real driver " + relay_->action() +
+                                                " went away during the goal; where the real arm stopped is unknown");
   else if (phase_ == Phase::AwaitingConfirmation && now > confirm_deadline_)
     finish(Result::INVALID_GOAL, "no confirmation within " + std::to_string(options_.confirm_timeout) +
                                      " s; nothing was sent to the real robot");
