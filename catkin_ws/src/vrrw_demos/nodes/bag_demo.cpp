@@ -4,6 +4,7 @@
 #include <regex>
 #include <set>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <control_msgs/GripperCommandActionGoal.h>
 #include <rosbag/bag.h>
@@ -12,6 +13,7 @@
 #include <std_msgs/String.h>
 #include <tf2_msgs/TFMessage.h>
 #include <vrrw_demos/demo_error.h>
+#include <vrrw_demos/new_file.h>
 #include <vrrw_msgs/Event.h>
 #include <yaml-cpp/yaml.h>
 
@@ -252,9 +254,8 @@ Demonstration readDemonstration(const std::string& path, const std::vector<std::
 
 void writeTrackBag(const std::string& path, const RobotTrack& track, const BagMetadata& metadata)
 {
-  struct stat info;
-  if (::stat(path.c_str(), &info) == 0)
-    throw DemoError(path + ": exists; not overwritten (remove it or choose another name)");
+  refuseTaken(path);  // nor a recording's FILE.active: the bag is written beside it and linked when whole
+  const std::string temporary = temporaryBeside(path);
   const ros::Time start = ros::Time().fromSec(metadata.start_stamp);
   YAML::Emitter out;
   out << YAML::BeginMap << YAML::Key << "format" << YAML::Value << "vrrw_demos/1";
@@ -267,7 +268,7 @@ void writeTrackBag(const std::string& path, const RobotTrack& track, const BagMe
   out << YAML::EndMap << YAML::EndMap << YAML::EndMap;
   try
   {
-    rosbag::Bag bag(path + ".active", rosbag::bagmode::Write);
+    rosbag::Bag bag(temporary, rosbag::bagmode::Write);
     std_msgs::String text;
     text.data = out.c_str();
     bag.write(kMetadataTopic, start, text);
@@ -290,9 +291,9 @@ void writeTrackBag(const std::string& path, const RobotTrack& track, const BagMe
   }
   catch (const rosbag::BagException& e)
   {
+    ::unlink(temporary.c_str());
     throw DemoError(path + ": cannot write (" + std::string(e.what()) + ")");
   }
-  if (::rename((path + ".active").c_str(), path.c_str()) != 0)
-    throw DemoError(path + ": cannot rename " + path + ".active to it");
+  publishNewFile(temporary, path);
 }
 }  // namespace vrrw_demos

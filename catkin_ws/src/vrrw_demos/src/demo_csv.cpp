@@ -1,9 +1,13 @@
 #include <vrrw_demos/demo_csv.h>
 
 #include <algorithm>
-#include <sys/stat.h>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
 
 #include <vrrw_demos/demo_error.h>
+#include <vrrw_demos/new_file.h>
 #include <vrrw_trajectory/csv.h>
 
 namespace vrrw_demos
@@ -53,28 +57,68 @@ RobotTrack fromTrajectory(const vrrw_trajectory::JointTrajectory& trajectory, co
 
 void exportCsv(const RobotTrack& track, const std::string& path)
 {
-  struct stat info;
-  if (::stat(path.c_str(), &info) == 0)
-    throw DemoError(path + ": exists; not overwritten (remove it or choose another name)");
+  refuseTaken(path);
+  std::ostringstream text;
   try
   {
-    vrrw_trajectory::writeCsv(path, toTrajectory(track));
+    vrrw_trajectory::writeCsv(text, toTrajectory(track), path);
   }
   catch (const vrrw_trajectory::TrajectoryError& e)
   {
     throw DemoError(e.what());
+  }
+  writeNewFile(path, text.str());
+}
+
+void checkRobotName(const std::string& robot)
+{
+  const bool valid = !robot.empty() && std::isalpha(static_cast<unsigned char>(robot[0])) &&
+                     std::all_of(robot.begin(), robot.end(),
+                                 [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+  if (!valid)
+    throw DemoError("robot: '" + robot + "' is not a robot's name (a letter, then letters, digits and _)");
+}
+
+void checkImported(const RobotTrack& track, const std::string& source)
+{
+  const std::string prefix = track.robot + "_";
+  for (const std::string& joint : track.joint_names)
+    if (joint.rfind(prefix, 0) != 0)
+      throw DemoError(source + ":1: joint '" + joint.substr(0, 48) + "' is not one of robot '" + track.robot +
+                      "' (its joints are named " + prefix + "<joint>)");
+  const auto outside = [&](std::size_t row, const std::string& column, double value, double bound) {
+    char text[64];
+    std::snprintf(text, sizeof(text), "%g is outside [-%g, %g]", value, bound, bound);
+    return DemoError(source + ": row " + std::to_string(row + 1) + ": column '" + column + "': " + text);
+  };
+  for (std::size_t k = 0; k < track.states.size(); ++k)
+  {
+    const RobotState& state = track.states[k];
+    for (std::size_t j = 0; j < state.positions.size(); ++j)
+    {
+      if (std::abs(state.positions[j]) > kMaxJointPosition)
+        throw outside(k, track.joint_names[j], state.positions[j], kMaxJointPosition);
+      if (std::abs(state.velocities[j]) > kMaxJointVelocity)
+        throw outside(k, track.joint_names[j] + "_vel", state.velocities[j], kMaxJointVelocity);
+    }
+    if (std::abs(state.gripper) > kMaxGripperPosition)
+      throw outside(k, kGripperColumn, state.gripper, kMaxGripperPosition);
   }
 }
 
 RobotTrack importCsv(const std::string& path, const std::string& robot)
 {
+  checkRobotName(robot);
+  RobotTrack track;
   try
   {
-    return fromTrajectory(vrrw_trajectory::readCsv(path), robot, path);
+    track = fromTrajectory(vrrw_trajectory::readCsv(path), robot, path);
   }
   catch (const vrrw_trajectory::TrajectoryError& e)
   {
     throw DemoError(e.what());
   }
+  checkImported(track, path);
+  return track;
 }
 }  // namespace vrrw_demos

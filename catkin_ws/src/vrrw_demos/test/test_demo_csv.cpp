@@ -91,3 +91,33 @@ TEST(DemoCsv, NeverOverwritesAndNamesBadInput)
   EXPECT_EQ(errorOf("t,a,a_vel,gripper\n0,1,2,0\n0,1,2,0\n"),
             ":3: time 0 is not after the previous time 0 (times must strictly increase)");
 }
+
+TEST(DemoCsv, ImportTakesOnlyTheRobotsJointsWithinPhysicalBounds)
+{
+  // another robot's joints (a ur10e recording imported as ur5e), an empty robot name, values of another unit
+  EXPECT_EQ(errorOf("t,ur10e_a,ur10e_a_vel,gripper\n0,1,2,0\n0.1,1,2,0\n"),
+            ":1: joint 'ur10e_a' is not one of robot 'ur5e' (its joints are named ur5e_<joint>)");
+  EXPECT_EQ(errorOf("t,ur5e_a,ur5e_a_vel,gripper\n0,1,2,0\n0.1,1,2,1e6\n"),
+            ": row 2: column 'gripper': 1e+06 is outside [-3.14159, 3.14159]");
+  EXPECT_EQ(errorOf("t,ur5e_a,ur5e_a_vel,gripper\n0,90,0,0\n0.1,91,10,0\n"),
+            ": row 1: column 'ur5e_a': 90 is outside [-12.5664, 12.5664]");
+  EXPECT_EQ(errorOf("t,ur5e_a,ur5e_a_vel,gripper\n0,1,0,0\n0.1,1,1000,0\n"),
+            ": row 2: column 'ur5e_a_vel': 1000 is outside [-100, 100]");
+  const std::string path = temporary("good.csv");
+  std::ofstream(path) << "t,ur5e_a,ur5e_a_vel,gripper\n0,1,0,0\n0.1,1,0,0.8\n";
+  for (const char* robot : { "", "ur5e/", "5e", "ur 5e" })
+  {
+    try
+    {
+      importCsv(path, robot);
+      ADD_FAILURE() << "robot '" << robot << "' accepted";
+    }
+    catch (const DemoError& e)
+    {
+      EXPECT_EQ(std::string(e.what()),
+                "robot: '" + std::string(robot) + "' is not a robot's name (a letter, then letters, digits and _)");
+    }
+  }
+  EXPECT_EQ(importCsv(path, "ur5e").states.back().gripper, 0.8);
+  std::remove(path.c_str());
+}

@@ -1,4 +1,6 @@
-// The recorder node end to end with a real master, rosbag files and the vrrw_demos tool.
+// The recorder node end to end with a real master, rosbag files and the vrrw_demos tool (and ./vrrw record):
+// lossless, SIGKILL, disk full, complete from start's answer, unknown robots, no other writer on a live
+// recording, feedback while recording, hostile file names, a huge one-line CSV.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -9,6 +11,10 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <atomic>
+#include <mutex>
+#include <thread>
 
 #include <ros/ros.h>
 #include <vrrw_common/ros/persistent_service.h>
@@ -88,7 +94,8 @@ struct Publishers
     }
     return false;
   }
-  /// count messages per robot at rate Hz; position[0] carries the sequence number.
+  /// count messages per robot at rate Hz; position[0] carries the sequence number in thousandths (a joint value
+  /// within the import's bounds).
   void publish(int count, double rate, int first = 0)
   {
     ros::WallRate loop(rate);
@@ -102,8 +109,8 @@ struct Publishers
           state.name.push_back(kRobots[r] + j);
         state.position.assign(7, 0.0);
         state.velocity.assign(7, 0.0);
-        state.position[0] = i;
-        state.position[1] = 1e-3 * i;
+        state.position[0] = i / 1000.0;
+        state.position[1] = -1e-3 * i;
         topics[r].publish(state);
       }
       loop.sleep();
@@ -171,7 +178,7 @@ TEST(Recorder, KeepsEveryMessageOfFourRobotsAt1kHz)
   // The same file again: refused, the bag untouched; the node keeps serving.
   const auto again = start(file);
   EXPECT_FALSE(again.success);
-  EXPECT_EQ(again.message, file + ": exists; not overwritten (choose another name)");
+  EXPECT_EQ(again.message, file + ": exists; not overwritten (remove it or choose another name)");
   stopRecorder(recorder);
 }
 
@@ -232,21 +239,264 @@ TEST(Recorder, BagToCsvToBagToCsvIsIdenticalAndStandardToolsReadIt)
   ASSERT_EQ(run(VRRW_ROOT "/.venv/bin/python " VRRW_ROOT "/catkin_ws/src/vrrw_demos/test/read_with_rosbags.py " + bag,
                 &output), 0) << output;
   EXPECT_NE(output.find("/r4/joint_states 10000\n"), std::string::npos) << output;
-  EXPECT_NE(output.find("last r1 position[0] 9999.0\n"), std::string::npos) << output;
+  EXPECT_NE(output.find("last r1 position[0] 9.999\n"), std::string::npos) << output;
   ASSERT_EQ(run(VRRW_SCRIPT " dmp learn --demo " + bag + " --robot r1 --out " + folder() + "/r1.yaml", &output), 0)
       << output;
 
-  EXPECT_EQ(run(VRRW_TOOL " export " + bag + " --csv " + csv1 + " --robot r2", &output), 1);
+  EXPECT_EQ(run(VRRW_TOOL " export " + bag + " --csv " + csv1 + " --robot r2", &output), 2);
   EXPECT_EQ(output, "vrrw demos export: " + csv1 + ": exists; not overwritten (remove it or choose another name)\n");
-  EXPECT_EQ(run(VRRW_TOOL " export " + bag + " --csv " + folder() + "/x.csv --robot ur5e", &output), 1);
+  EXPECT_EQ(run(VRRW_TOOL " export " + bag + " --csv " + folder() + "/x.csv --robot ur5e", &output), 2);
   EXPECT_EQ(output, "vrrw demos export: " + bag +
                         ": no robot 'ur5e' (no topic /ur5e/joint_states; the bag has: r1, r2, r3, r4)\n");
   const std::string cut = folder() + "/cut.bag";
   std::ofstream(cut) << slurp(bag).substr(0, 300000);  // truncated: the index at the end is gone
-  EXPECT_EQ(run(VRRW_TOOL " segment " + cut, &output), 1);
+  EXPECT_EQ(run(VRRW_TOOL " segment " + cut, &output), 2);
   EXPECT_EQ(output.rfind("vrrw demos segment: " + cut + ": not ", 0), 0u) << output;
   EXPECT_NE(output.find("./vrrw demos recover " + cut), std::string::npos) << output;
   EXPECT_EQ(std::count(output.begin(), output.end(), '\n'), 1);
+}
+
+namespace
+{
+/// A program with its arguments as given (no shell), in \a cwd; its output through a pipe, line by line.
+class Child
+{
+public:
+  Child(const std::vector<std::string>& args, const std::string& cwd = "")
+  {
+    int ends[2];
+    EXPECT_EQ(::pipe(ends), 0);
+    pid_ = ::fork();
+    if (pid_ == 0)
+    {
+      ::dup2(ends[1], STDOUT_FILENO);
+      ::dup2(ends[1], STDERR_FILENO);
+      ::close(ends[0]);
+      if (!cwd.empty() && ::chdir(cwd.c_str()) != 0)
+        ::_exit(126);
+      std::vector<char*> argv;
+      for (const std::string& arg : args)
+        argv.push_back(const_cast<char*>(arg.c_str()));
+      argv.push_back(nullptr);
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
+    ::close(ends[1]);
+    out_ = ::fdopen(ends[0], "r");
+  }
+  ~Child()
+  {
+    std::fclose(out_);
+    if (pid_ > 0)
+      wait();
+  }
+  bool line(std::string& text)
+  {
+    char buffer[8192];
+    if (!std::fgets(buffer, sizeof(buffer), out_))
+      return false;
+    text = buffer;
+    return true;
+  }
+  std::string rest()
+  {
+    std::string all, text;
+    while (line(text))
+      all += text;
+    return all;
+  }
+  void signal(int number) { ::kill(pid_, number); }
+  int wait()
+  {
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+private:
+  pid_t pid_ = -1;
+  FILE* out_ = nullptr;
+};
+
+bool exists(const std::string& path)
+{
+  struct stat info;
+  return ::stat(path.c_str(), &info) == 0;
+}
+
+/// /r1/joint_states at about 1 kHz from a thread, each stamped as it is published; the stamps kept.
+class SteadyPublisher
+{
+public:
+  explicit SteadyPublisher(ros::NodeHandle& nh)
+    : topic_(nh.advertise<sensor_msgs::JointState>("/r1/joint_states", 20000)), thread_([this] { loop(); })
+  {
+  }
+  ~SteadyPublisher() { stop(); }
+  void stop()
+  {
+    running_ = false;
+    if (thread_.joinable())
+      thread_.join();
+  }
+  std::vector<ros::Time> stamps()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return stamps_;
+  }
+
+private:
+  void loop()
+  {
+    ros::WallRate rate(1000.0);
+    for (int i = 0; running_; ++i, rate.sleep())
+    {
+      sensor_msgs::JointState state;
+      state.name = { "r1_a", "r1_b", "r1_c", "r1_d", "r1_e", "r1_f", "r1_finger_joint" };
+      state.position.assign(7, 0.0);
+      state.position[0] = i;
+      std::lock_guard<std::mutex> lock(mutex_);
+      state.header.stamp = ros::Time::now();
+      topic_.publish(state);
+      stamps_.push_back(state.header.stamp);
+    }
+  }
+  ros::Publisher topic_;
+  std::atomic<bool> running_{ true };
+  std::mutex mutex_;
+  std::vector<ros::Time> stamps_;  ///< PROTECTED BY mutex_
+  std::thread thread_;
+};
+}  // namespace
+
+TEST(Recorder, TheBagIsCompleteFromTheMomentStartAnswers)
+{
+  ros::NodeHandle nh;
+  SteadyPublisher publisher(nh);  // publishing before, during and after the start
+  const pid_t recorder = startRecorder();
+  ros::WallDuration(0.5).sleep();
+  const std::string file = folder() + "/complete.bag";
+  vrrw_msgs::DemoStart srv;
+  srv.request.file = file;
+  srv.request.robots = { "r1" };
+  ASSERT_TRUE(vrrw_common::services().tryCall("/demos/start", srv));
+  const ros::Time answered = ros::Time::now();
+  ASSERT_TRUE(srv.response.success) << srv.response.message;
+  EXPECT_LE(srv.response.complete_from, answered);
+  EXPECT_NE(std::find(srv.response.topics.begin(), srv.response.topics.end(), "/r1/joint_states"),
+            srv.response.topics.end());
+  ros::WallDuration(1.0).sleep();
+  vrrw_msgs::DemoStop stop;
+  ASSERT_TRUE(vrrw_common::services().tryCall("/demos/stop", stop));  // stops before the publisher: its last ones are not asked for
+  const ros::Time stopped = ros::Time::now();
+  publisher.stop();
+  std::size_t published = 0, recorded = 0;
+  for (const ros::Time& stamp : publisher.stamps())
+    published += stamp >= srv.response.complete_from && stamp + ros::Duration(0.1) < stopped;
+  rosbag::Bag bag(file, rosbag::bagmode::Read);
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery("/r1/joint_states")))
+  {
+    const auto state = m.instantiate<sensor_msgs::JointState>();
+    recorded += state->header.stamp >= srv.response.complete_from && state->header.stamp + ros::Duration(0.1) < stopped;
+  }
+  std::cout << "published from complete_from on: " << published << ", in the bag: " << recorded << "; complete_from "
+            << (answered - srv.response.complete_from).toSec() << " s before the answer\n";
+  EXPECT_GT(published, 500u);
+  EXPECT_EQ(recorded, published);
+  stopRecorder(recorder);
+}
+
+TEST(Recorder, RefusesUnknownRobotsAndNeverLetsAnotherWriterTakeItsFile)
+{
+  ros::NodeHandle nh;
+  Publishers publishers(nh);
+  const pid_t recorder = startRecorder();
+  vrrw_msgs::DemoStart unknown;
+  unknown.request.file = folder() + "/ur99.bag";
+  unknown.request.robots = { "ur99" };
+  ASSERT_TRUE(vrrw_common::services().tryCall("/demos/start", unknown));
+  EXPECT_FALSE(unknown.response.success);
+  EXPECT_EQ(unknown.response.message, "robots: 'ur99' is not a robot of the scene (its robots: r1, r2, r3, r4)");
+  EXPECT_FALSE(exists(unknown.request.file + ".active"));
+
+  // a live recording: import, export and segment may not write to it (nor to its .active)
+  const std::string clash = folder() + "/clash.bag", csv = folder() + "/clash_source.csv";
+  std::string output;
+  ASSERT_EQ(run(VRRW_TOOL " export " + folder() + "/lossless.bag --csv " + csv + " --robot r1", &output), 0) << output;
+  ASSERT_TRUE(start(clash).success);
+  ASSERT_TRUE(publishers.connected());
+  publishers.publish(500, 1000.0);
+  EXPECT_EQ(run(VRRW_TOOL " import " + csv + " --bag " + clash + " --robot r1", &output), 2);
+  EXPECT_EQ(output, "vrrw demos import: " + clash + ": a recording is being written to " + clash +
+                        ".active (or was killed there: ./vrrw demos recover " + clash + ".active); choose another name\n");
+  EXPECT_EQ(run(VRRW_TOOL " import " + csv + " --bag " + clash + ".active --robot r1", &output), 2);
+  EXPECT_EQ(run(VRRW_TOOL " export " + folder() + "/lossless.bag --csv " + clash + " --robot r1", &output), 2);
+  EXPECT_EQ(run(VRRW_TOOL " segment " + folder() + "/lossless.bag --out " + clash, &output), 2);
+  publishers.publish(500, 1000.0, 500);
+  ros::Duration(0.3).sleep();
+  vrrw_msgs::DemoStop stop;
+  ASSERT_TRUE(vrrw_common::services().tryCall("/demos/stop", stop));
+  EXPECT_TRUE(stop.response.success) << stop.response.message;
+  EXPECT_EQ(countPerTopic(clash).at("/r1/joint_states"), 1000);  // the recording is whole
+  stopRecorder(recorder);
+}
+
+TEST(Recorder, RecordSaysWhatItRecordsAndHowMuchAndStopsOnCtrlC)
+{
+  ros::NodeHandle nh;
+  Publishers publishers(nh);
+  const pid_t recorder = startRecorder();
+  // a name with every character a shell or a launch file would take for its own
+  const std::string name = "a|b&c';touch PWNED;'$(touch PWNED2)<x>.bag";
+  Child record({ VRRW_SCRIPT, "record", "running", "--out", name, "--robots", "r1,r2,r3,r4" }, folder());
+  std::string first, second, text;
+  ASSERT_TRUE(record.line(first));
+  ASSERT_TRUE(record.line(second));
+  EXPECT_EQ(first.rfind("record: recording r1, r2, r3, r4 to " + folder() + "/" + name + ": ", 0), 0u) << first;
+  EXPECT_NE(first.find(" topics, complete from "), std::string::npos) << first;
+  EXPECT_EQ(second.rfind("record: topics: ", 0), 0u) << second;
+  EXPECT_NE(second.find("/r2/joint_states"), std::string::npos) << second;
+  ASSERT_TRUE(publishers.connected());
+  std::thread publish([&] { publishers.publish(4000, 1000.0); });  // 4 s: a "how much" line comes after 3 s
+  ASSERT_TRUE(record.line(text));
+  publish.join();
+  EXPECT_NE(text.find(" s, "), std::string::npos) << text;
+  EXPECT_NE(text.find(" messages, "), std::string::npos) << text;
+  EXPECT_NE(text.find(" MB, "), std::string::npos) << text;
+  record.signal(SIGINT);
+  const std::string rest = record.rest();
+  EXPECT_EQ(record.wait(), 0) << rest;
+  EXPECT_NE(rest.find("record: stopped: "), std::string::npos) << rest;
+  EXPECT_EQ(countPerTopic(folder() + "/" + name).at("/r2/joint_states"), 4000);
+  EXPECT_FALSE(exists(folder() + "/PWNED"));
+  EXPECT_FALSE(exists(folder() + "/PWNED2"));
+  stopRecorder(recorder);
+}
+
+TEST(Recorder, PlotTakesHostilePathsAsPathsAndSaysWhenItCannotWrite)
+{
+  const std::string bag = folder() + "/x';touch PWNED;'.bag";
+  ASSERT_EQ(::link((folder() + "/lossless.bag").c_str(), bag.c_str()), 0);
+  Child plot({ VRRW_TOOL, "plot", bag, "--robot", "r1", "--out", "y';touch PWNED;'.png" }, folder());
+  const std::string output = plot.rest();
+  EXPECT_EQ(plot.wait(), 0) << output;
+  EXPECT_TRUE(exists(folder() + "/y';touch PWNED;'.png")) << output;
+  EXPECT_FALSE(exists(folder() + "/PWNED"));
+  Child refused({ VRRW_TOOL, "plot", bag, "--robot", "r1", "--out", "/proc/vrrw_plot.png" });
+  EXPECT_EQ(refused.rest(), "vrrw demos plot: /proc/vrrw_plot.png: cannot create a file in /proc (No such file or directory)\n");
+  EXPECT_EQ(refused.wait(), 2);
+}
+
+TEST(Recorder, AHugeOneLineCsvIsOneShortLine)
+{
+  const std::string csv = folder() + "/huge.csv";
+  std::ofstream(csv) << "t,r1_a,r1_a_vel\n" << std::string(5000000, '7');
+  std::string output;
+  EXPECT_EQ(run(VRRW_TOOL " import " + csv + " --bag " + folder() + "/huge.bag --robot r1", &output), 2);
+  EXPECT_EQ(output, "vrrw demos import: " + csv +
+                        ":2: longer than 65536 characters: not a row of a trajectory (a row of joint values has a few "
+                        "hundred)\n");
 }
 
 int main(int argc, char** argv)

@@ -1,5 +1,6 @@
 // `vrrw demos replay` against running controllers: a scripted pick-and-place (CSV -> bag) replayed whole,
-// then one segment; the tool's JSON line carries the error against the de-jittered path.
+// then one segment; the tool's JSON line carries the error against the de-jittered path. Progress through a
+// pipe while the arm moves, bad input that sends nothing, --speed, Ctrl-C.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -8,6 +9,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <actionlib_msgs/GoalStatusArray.h>
+#include <atomic>
+#include <control_msgs/FollowJointTrajectoryActionGoal.h>
+#include <csignal>
+#include <mutex>
 #include <ros/ros.h>
 #include <vrrw_demos/demo_csv.h>
 
@@ -79,47 +85,197 @@ TEST(Replay, OneSegmentAndBadInput)
   std::string output;
   ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --segment pick", output), 0) << output;
   EXPECT_NE(output.find("\"result\": \"SUCCEEDED\""), std::string::npos) << output;
-  EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --segment wave", output), 1);
+  EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --segment wave", output), 2);
   EXPECT_NE(output.find("has no segment 'wave' (found: near_pick, pick, close_gripper, back_to_near_pick, final, "
                         "open_gripper)"),
             std::string::npos)
       << output;
-  EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode real", output), 1);
+  EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode real", output), 2);
   EXPECT_NE(output.find("--mode real, but /ur5e/controller runs in mode '" + g_mode + "'"), std::string::npos) << output;
   const std::string csv = folder() + "/other.csv", bag = folder() + "/other.bag";
   auto other = vrrw_demos_test::scriptedPickPlace(50.0).demo.robots[0];
   for (auto& name : other.joint_names)
-    name = "left_" + name.substr(5);
+    name = "ur5e_x" + name.substr(4);  // the robot's prefix, but not its joints
   vrrw_demos::exportCsv(other, csv);
   ASSERT_EQ(run(VRRW_TOOL " import " + csv + " --bag " + bag + " --robot ur5e", output), 0) << output;
-  EXPECT_EQ(run(VRRW_TOOL " replay " + bag + " --mode " + g_mode, output), 1);
+  EXPECT_EQ(run(VRRW_TOOL " replay " + bag + " --mode " + g_mode, output), 2);
   EXPECT_NE(output.find("of the running scene has joints [ ur5e_shoulder_pan_joint"), std::string::npos) << output;
 }
 
-TEST(Replay, RealModeSendsEachGoalToTheDriverOnceSimulated)
+namespace
 {
-  ASSERT_EQ(g_mode, "real") << "replay_real.test runs this one alone";
-  const std::string goals = "/tmp/vrrw_replay_real_goals.jsonl";  // the stand-in driver's record
-  std::remove(goals.c_str());
+/// The tool as a child whose output comes through a pipe (as when a user pipes it), line by line.
+class PipedTool
+{
+public:
+  explicit PipedTool(const std::vector<std::string>& args)
+  {
+    int ends[2];
+    EXPECT_EQ(::pipe(ends), 0);
+    pid_ = ::fork();
+    if (pid_ == 0)
+    {
+      ::dup2(ends[1], STDOUT_FILENO);
+      ::dup2(ends[1], STDERR_FILENO);
+      ::close(ends[0]);
+      std::vector<char*> argv{ const_cast<char*>(VRRW_TOOL) };
+      for (const std::string& arg : args)
+        argv.push_back(const_cast<char*>(arg.c_str()));
+      argv.push_back(nullptr);
+      ::execv(VRRW_TOOL, argv.data());
+      ::_exit(127);
+    }
+    ::close(ends[1]);
+    out_ = ::fdopen(ends[0], "r");
+  }
+  ~PipedTool()
+  {
+    if (out_)
+      std::fclose(out_);
+    if (pid_ > 0)
+      wait();
+  }
+  /// The next line; false at the end of the output.
+  bool line(std::string& text)
+  {
+    char buffer[4096];
+    if (!std::fgets(buffer, sizeof(buffer), out_))
+      return false;
+    text = buffer;
+    return true;
+  }
+  void signal(int number) { ::kill(pid_, number); }
+  int wait()
+  {
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+private:
+  pid_t pid_ = -1;
+  FILE* out_ = nullptr;
+};
+
+/// The arm controller's goals as its action topics show them.
+class ArmGoals
+{
+public:
+  explicit ArmGoals(ros::NodeHandle& nh)
+    : status_(nh.subscribe<actionlib_msgs::GoalStatusArray>(
+          "/ur5e/arm_controller/follow_joint_trajectory/status", 10,
+          [this](const actionlib_msgs::GoalStatusArrayConstPtr& m) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            latest_ = *m;
+          }))
+    , goals_(nh.subscribe<control_msgs::FollowJointTrajectoryActionGoal>(
+          "/ur5e/arm_controller/follow_joint_trajectory/goal", 100,
+          [this](const control_msgs::FollowJointTrajectoryActionGoalConstPtr&) { ++sent_; }))
+  {
+  }
+  /// A goal is pending or active now (the status is published at the controller's rate).
+  bool active()
+  {
+    ros::WallDuration(0.1).sleep();  // a status newer than what was read before
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& s : latest_.status_list)
+      if (s.status == actionlib_msgs::GoalStatus::ACTIVE || s.status == actionlib_msgs::GoalStatus::PENDING)
+        return true;
+    return false;
+  }
+  int sent() const { return sent_; }
+
+private:
+  ros::Subscriber status_, goals_;
+  std::mutex mutex_;
+  actionlib_msgs::GoalStatusArray latest_;  ///< PROTECTED BY mutex_
+  std::atomic<int> sent_{ 0 };
+};
+}  // namespace
+
+TEST(Replay, ProgressReachesAPipeWhileTheArmMoves)
+{
+  ros::NodeHandle nh;
+  ArmGoals goals(nh);
+  PipedTool tool({ "replay", scriptedBag(), "--mode", g_mode });
+  std::string text, progress;
+  bool moving = false;
+  while (tool.line(text))
+    if (progress.empty() && text.find(" s left") != std::string::npos &&
+        text.find("to the recorded start") == std::string::npos)  // the demonstration's, not the approach's
+    {
+      progress = text;
+      moving = goals.active();
+    }
+  EXPECT_EQ(tool.wait(), 0);
+  ASSERT_FALSE(progress.empty()) << "no progress line of the replay";
+  EXPECT_TRUE(moving) << "the progress line came only after the motion: " << progress;
+}
+
+TEST(Replay, BadSpeedsAndTolerancesSendNothing)
+{
+  ros::NodeHandle nh;
+  ArmGoals goals(nh);
+  ros::WallDuration(0.5).sleep();
+  const int before = goals.sent();
   std::string output;
-  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode real --yes", output), 0) << output;
-  // the controller ran each goal in simulation and held it for the confirmation, then relayed it
-  EXPECT_NE(output.find("replay: to the recorded start: SUCCEEDED"), std::string::npos) << output;
-  EXPECT_NE(output.find("\"result\": \"SUCCEEDED\""), std::string::npos) << output;
-  EXPECT_EQ(output.find("not confirmed"), std::string::npos) << output;
-  std::ifstream in(goals);
-  std::vector<std::string> received;
-  for (std::string line; std::getline(in, line);)
-    received.push_back(line);
-  ASSERT_EQ(received.size(), 2u) << output;  // the approach and the demonstration; gripper goals stay simulated
-  for (const std::string& goal : received)
-    EXPECT_NE(goal.find("\"joint_names\": [\"shoulder_pan_joint\""), std::string::npos) << goal;  // prefix stripped
+  for (const char* speed : { "1e-300", "0", "-1", "11" })
+  {
+    EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed " + speed, output), 2) << speed;
+    EXPECT_EQ(output, std::string("vrrw demos replay: --speed: ") + speed + " outside [0.1, 10]\n");
+  }
+  for (const char* speed : { "inf", "nan" })
+  {
+    EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed " + speed, output), 2) << speed;
+    EXPECT_EQ(output, std::string("vrrw demos replay: --speed: '") + speed + "' is not a finite number\n");
+  }
+  EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --tolerance 1e9", output), 2);
+  EXPECT_EQ(output, "vrrw demos replay: --tolerance: 1e9 outside [0, 0.01] rad\n");
+  ros::WallDuration(0.5).sleep();
+  EXPECT_EQ(goals.sent(), before);  // not even the approach
+}
+
+TEST(Replay, SpeedChangesThePaceWhereTheLimitsAllow)
+{
+  // at 0.8 the scripted motions stay well within the UR5e's limits (wrist_1 peaks at 2.31 * 0.8^2 = 1.5 rad/s^2
+  // of 3.14): exactly 10 / 0.8 s; at 2 they would not (9.2 rad/s^2): only those stretches slow, the rest keeps
+  // the pace
+  std::string output;
+  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed 0.8", output), 0) << output;
+  EXPECT_NEAR(field(output, "recorded"), 10.0, 0.01) << output;
+  EXPECT_NEAR(field(output, "duration"), 10.0 / 0.8, 0.001) << output;
+  EXPECT_EQ(field(output, "stretches"), 0.0) << output;
+  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed 2", output), 0) << output;
+  EXPECT_GT(field(output, "duration"), 5.0) << output;
+  EXPECT_LT(field(output, "duration"), 10.0) << output;
+  EXPECT_GT(field(output, "stretches"), 0.0) << output;
+  EXPECT_NE(output.find("stretches slowed into the limits"), std::string::npos) << output;
+}
+
+TEST(Replay, CtrlCCancelsTheRunningGoal)
+{
+  ros::NodeHandle nh;
+  ArmGoals goals(nh);
+  PipedTool tool({ "replay", scriptedBag(), "--mode", g_mode, "--speed", "0.2" });
+  std::string text, all;
+  while (tool.line(text) && text.find("replay: near_pick") == std::string::npos)
+    all += text;
+  ASSERT_TRUE(goals.active()) << all;
+  tool.signal(SIGINT);
+  while (tool.line(text))
+    all += text;
+  EXPECT_EQ(tool.wait(), 1) << all;
+  EXPECT_NE(all.find("replay: CANCELLED (cancelled by the user; the controller: PREEMPTED"), std::string::npos) << all;
+  EXPECT_FALSE(goals.active()) << "the goal outlived the tool";
 }
 
 int main(int argc, char** argv)
 {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "test_replay");
+  ros::AsyncSpinner spinner(1);  // the goal status and goal counters
+  spinner.start();
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "fake" || std::string(argv[i]) == "physics" || std::string(argv[i]) == "real")
       g_mode = argv[i];
