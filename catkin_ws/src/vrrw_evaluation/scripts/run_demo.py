@@ -168,11 +168,9 @@ def main():
     # lockstep); the demonstration is recorded at 100 Hz of simulated time (a viewer gets 50 Hz).
     launch = os.path.join(workdir, 'demo.launch')
     with open(launch, 'w') as f:
-        # vrrw_demos' recorder writes the demonstration's bag when it is built (demo_runner's own otherwise).
-        recorder = '  <include file="$(find vrrw_demos)/launch/recorder.launch"/>\n' if subprocess.run(
-            ['rospack', 'find', 'vrrw_demos'], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode == 0 else ''
+        # the workspace's launch runs vrrw_demos' recorder when it is built (demo_runner records itself otherwise)
         f.write(f'<launch>\n  <include file="{args.launch}"/>\n'
-                f'  <param name="/physics/publish_rate" value="100"/>\n{recorder}</launch>\n')
+                f'  <param name="/physics/publish_rate" value="100"/>\n</launch>\n')
     demo_config(config)
     # VRRW_DISPLAY / VRRW_ROS_PORT pin the display and the master's port (parallel runs on one machine).
     display = int(os.environ.get('VRRW_DISPLAY') or render_scene.free_display())

@@ -1,0 +1,81 @@
+// `./vrrw up SCENE` runs the demonstration recorder idle beside the workspace: /demos/start is there whenever
+// the workspace is, and records its robot.
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <cstdio>
+#include <mutex>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <ros/ros.h>
+#include <vrrw_msgs/DemoStart.h>
+#include <vrrw_msgs/DemoStatus.h>
+#include <vrrw_msgs/DemoStop.h>
+
+TEST(WorkspaceRecorder, UpStartsTheRecorderIdleAndItRecordsTheScenesRobot)
+{
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  const pid_t up = ::fork();
+  if (up == 0)
+  {
+    ::setsid();
+    ::dup2(ends[1], STDOUT_FILENO);
+    ::close(ends[0]);
+    ::execl(VRRW_SCRIPT, VRRW_SCRIPT, "up", "pick_place_drill", "--mode", "fake", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(ends[1]);
+  FILE* out = ::fdopen(ends[0], "r");
+  char line[8192];
+  bool ready = false;
+  while (!ready && std::fgets(line, sizeof(line), out))
+    ready = std::string(line).rfind("ready: ", 0) == 0;
+  ASSERT_TRUE(ready);
+
+  ros::NodeHandle nh;
+  std::mutex mutex;
+  std::vector<vrrw_msgs::DemoStatus> statuses;
+  ros::Subscriber status = nh.subscribe<vrrw_msgs::DemoStatus>("/demos/status", 10, [&](const vrrw_msgs::DemoStatusConstPtr& m) {
+    std::lock_guard<std::mutex> lock(mutex);
+    statuses.push_back(*m);
+  });
+  ASSERT_TRUE(ros::service::waitForService("/demos/start", ros::Duration(20.0)));
+  for (int k = 0; k < 100 && statuses.empty(); ++k)
+    ros::Duration(0.05).sleep();
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    ASSERT_FALSE(statuses.empty());
+    EXPECT_FALSE(statuses.front().recording);  // idle
+  }
+  char folder[] = "/tmp/vrrw_workspace_recorder_XXXXXX";
+  const std::string file = std::string(::mkdtemp(folder)) + "/up.bag";
+  ros::ServiceClient start = nh.serviceClient<vrrw_msgs::DemoStart>("/demos/start", true);
+  vrrw_msgs::DemoStart call;
+  call.request.file = file;
+  ASSERT_TRUE(start.call(call));
+  EXPECT_TRUE(call.response.success) << call.response.message;
+  EXPECT_NE(std::find(call.response.topics.begin(), call.response.topics.end(), "/ur5e/joint_states"),
+            call.response.topics.end());
+  ros::Duration(1.0).sleep();
+  ros::ServiceClient stop = nh.serviceClient<vrrw_msgs::DemoStop>("/demos/stop", true);
+  vrrw_msgs::DemoStop stopped;
+  ASSERT_TRUE(stop.call(stopped));
+  EXPECT_TRUE(stopped.response.success) << stopped.response.message;
+  EXPECT_GT(stopped.response.messages, 50u);  // a second of the fake controller's joint_states at 100 Hz, and tf
+
+  ::kill(-up, SIGINT);
+  int wstatus = 0;
+  ::waitpid(up, &wstatus, 0);
+  std::fclose(out);
+}
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_workspace_recorder");
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  return RUN_ALL_TESTS();
+}
