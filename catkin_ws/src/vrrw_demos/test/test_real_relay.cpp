@@ -77,11 +77,11 @@ class DriverArm
 {
 public:
   explicit DriverArm(ros::NodeHandle& nh)
-    : sub_(nh.subscribe<sensor_msgs::JointState>("/stand_in/joint_states", 10, [this](const sensor_msgs::JointStateConstPtr& m) {
+  {
+    sub_ = nh.subscribe<sensor_msgs::JointState>("/stand_in/joint_states", 10, [this](const sensor_msgs::JointStateConstPtr& m) {
       std::lock_guard<std::mutex> lock(mutex_);
       pan_ = m->position[0];
-    }))
-  {
+    });
   }
   double pan()
   {
@@ -98,9 +98,9 @@ public:
   }
 
 private:
-  ros::Subscriber sub_;
   std::mutex mutex_;
   double pan_ = 0.0;  ///< PROTECTED BY mutex_
+  ros::Subscriber sub_;  ///< last: destroyed first (its shutdown waits for a running callback)
 };
 
 DriverArm* g_driver = nullptr;

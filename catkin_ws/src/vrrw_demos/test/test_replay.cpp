@@ -163,16 +163,15 @@ class ArmGoals
 {
 public:
   explicit ArmGoals(ros::NodeHandle& nh)
-    : status_(nh.subscribe<actionlib_msgs::GoalStatusArray>(
-          "/ur5e/arm_controller/follow_joint_trajectory/status", 10,
-          [this](const actionlib_msgs::GoalStatusArrayConstPtr& m) {
-            std::lock_guard<std::mutex> lock(mutex_);
-            latest_ = *m;
-          }))
-    , goals_(nh.subscribe<control_msgs::FollowJointTrajectoryActionGoal>(
-          "/ur5e/arm_controller/follow_joint_trajectory/goal", 100,
-          [this](const control_msgs::FollowJointTrajectoryActionGoalConstPtr&) { ++sent_; }))
   {
+    status_ = nh.subscribe<actionlib_msgs::GoalStatusArray>(
+        "/ur5e/arm_controller/follow_joint_trajectory/status", 10, [this](const actionlib_msgs::GoalStatusArrayConstPtr& m) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          latest_ = *m;
+        });
+    goals_ = nh.subscribe<control_msgs::FollowJointTrajectoryActionGoal>(
+        "/ur5e/arm_controller/follow_joint_trajectory/goal", 100,
+        [this](const control_msgs::FollowJointTrajectoryActionGoalConstPtr&) { ++sent_; });
   }
   /// A goal is pending or active now (the status is published at the controller's rate).
   bool active()
@@ -187,10 +186,10 @@ public:
   int sent() const { return sent_; }
 
 private:
-  ros::Subscriber status_, goals_;
   std::mutex mutex_;
   actionlib_msgs::GoalStatusArray latest_;  ///< PROTECTED BY mutex_
   std::atomic<int> sent_{ 0 };
+  ros::Subscriber status_, goals_;  ///< last: destroyed first (their shutdown waits for a running callback)
 };
 }  // namespace
 

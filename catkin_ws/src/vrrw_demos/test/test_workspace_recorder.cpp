@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <ros/ros.h>
+#include <vrrw_common/ros/persistent_service.h>
 #include <vrrw_msgs/DemoStart.h>
 #include <vrrw_msgs/DemoStatus.h>
 #include <vrrw_msgs/DemoStop.h>
@@ -41,7 +42,7 @@ TEST(WorkspaceRecorder, UpStartsTheRecorderIdleAndItRecordsTheScenesRobot)
     std::lock_guard<std::mutex> lock(mutex);
     statuses.push_back(*m);
   });
-  ASSERT_TRUE(ros::service::waitForService("/demos/start", ros::Duration(20.0)));
+  ASSERT_TRUE(vrrw_common::PersistentServices::waitFor("/demos/start", 20.0));
   for (int k = 0; k < 100 && statuses.empty(); ++k)
     ros::Duration(0.05).sleep();
   {
@@ -51,17 +52,15 @@ TEST(WorkspaceRecorder, UpStartsTheRecorderIdleAndItRecordsTheScenesRobot)
   }
   char folder[] = "/tmp/vrrw_workspace_recorder_XXXXXX";
   const std::string file = std::string(::mkdtemp(folder)) + "/up.bag";
-  ros::ServiceClient start = nh.serviceClient<vrrw_msgs::DemoStart>("/demos/start", true);
   vrrw_msgs::DemoStart call;
   call.request.file = file;
-  ASSERT_TRUE(start.call(call));
+  ASSERT_TRUE(vrrw_common::services().tryCall("/demos/start", call));
   EXPECT_TRUE(call.response.success) << call.response.message;
   EXPECT_NE(std::find(call.response.topics.begin(), call.response.topics.end(), "/ur5e/joint_states"),
             call.response.topics.end());
   ros::Duration(1.0).sleep();
-  ros::ServiceClient stop = nh.serviceClient<vrrw_msgs::DemoStop>("/demos/stop", true);
   vrrw_msgs::DemoStop stopped;
-  ASSERT_TRUE(stop.call(stopped));
+  ASSERT_TRUE(vrrw_common::services().tryCall("/demos/stop", stopped));
   EXPECT_TRUE(stopped.response.success) << stopped.response.message;
   EXPECT_GT(stopped.response.messages, 50u);  // a second of the fake controller's joint_states at 100 Hz, and tf
 

@@ -117,12 +117,12 @@ class StatusView
 {
 public:
   explicit StatusView(ros::NodeHandle& nh)
-    : sub_(nh.subscribe<vrrw_msgs::DemoStatus>("/demos/status", 10, [this](const vrrw_msgs::DemoStatusConstPtr& m) {
+  {
+    sub_ = nh.subscribe<vrrw_msgs::DemoStatus>("/demos/status", 10, [this](const vrrw_msgs::DemoStatusConstPtr& m) {
       std::lock_guard<std::mutex> lock(mutex_);
       latest_ = *m;
       when_ = ros::WallTime::now();
-    }))
-  {
+    });
   }
   std::pair<vrrw_msgs::DemoStatus, ros::WallTime> latest()
   {
@@ -131,10 +131,10 @@ public:
   }
 
 private:
-  ros::Subscriber sub_;
   std::mutex mutex_;
   vrrw_msgs::DemoStatus latest_;  ///< PROTECTED BY mutex_
   ros::WallTime when_;            ///< PROTECTED BY mutex_
+  ros::Subscriber sub_;           ///< last: destroyed first (its shutdown waits for a running callback)
 };
 
 bool waitFor(const std::function<bool()>& ready, double seconds, const std::atomic<bool>& interrupted)

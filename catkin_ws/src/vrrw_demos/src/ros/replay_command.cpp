@@ -208,9 +208,9 @@ public:
 private:
   std::vector<std::string> joints_;
   ros::Time origin_;
-  ros::Subscriber sub_;
   std::mutex mutex_;
   std::vector<MeasuredState> states_;  ///< PROTECTED BY mutex_ (the spinner's threads append)
+  ros::Subscriber sub_;  ///< last: destroyed first (its shutdown waits for a running callback)
 };
 
 bool resetPhysics(RobotControllers& controllers)

@@ -31,9 +31,9 @@ RobotControllers::RobotControllers(const std::string& robot, bool real, const st
   : ns_("/" + robot + "/")
   , real_(real)
   , interrupted_(interrupted)
-  , services_(std::make_unique<vrrw_common::PersistentServices>())
   , arm_(ns_ + "arm_controller/follow_joint_trajectory", true)
   , gripper_(ns_ + "gripper_controller/gripper_cmd", true)
+  , services_(std::make_unique<vrrw_common::PersistentServices>())
 {
   states_ = ros::NodeHandle().subscribe<sensor_msgs::JointState>(
       ns_ + "joint_states", 1, [this](const sensor_msgs::JointStateConstPtr& state) {

@@ -123,13 +123,15 @@ private:
   std::string confirm_service_;
   std::unique_ptr<vrrw_common::PersistentServices> services_;  ///< the confirmation, every kConfirmPeriod
   std::string confirm_message_;
-  ros::Subscriber states_;  ///< the latest joint_states (a spinner must run: the tools run an AsyncSpinner)
   std::mutex state_mutex_;
   sensor_msgs::JointState latest_state_;  ///< PROTECTED BY state_mutex_
   std::atomic<std::size_t> states_seen_{ 0 };  ///< joint_states received; written under state_mutex_
   std::atomic<bool> cancelled_{ false };
   ros::Time last_clock_;           ///< the ROS time last seen moving ...
   ros::WallTime last_clock_wall_;  ///< ... and when, on the wall clock (the stall guard)
+  /// The latest joint_states (a spinner must run: the tools run an AsyncSpinner). Declared last, so destroyed
+  /// first: its shutdown waits for a running callback, which then finds every member it writes alive.
+  ros::Subscriber states_;
 };
 
 /// \brief Asks the operator on \a out to type yes on \a in before a real robot moves; true if they did.
