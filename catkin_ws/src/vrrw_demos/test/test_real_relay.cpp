@@ -22,33 +22,16 @@
 #include <xmlrpcpp/XmlRpcClient.h>
 
 #include "scripted_demo.h"
+#include "tool_process.h"
 
 using namespace vrrw_demos;
+using vrrw_demos_test::folder;
+using vrrw_demos_test::run;
 
 namespace
 {
 const std::vector<std::string> kJoints{ "ur5e_shoulder_pan_joint", "ur5e_shoulder_lift_joint", "ur5e_elbow_joint",
                                         "ur5e_wrist_1_joint",      "ur5e_wrist_2_joint",       "ur5e_wrist_3_joint" };
-
-std::string folder()
-{
-  static const std::string path = [] {
-    char name[] = "/tmp/vrrw_real_relay_XXXXXX";
-    return std::string(::mkdtemp(name));
-  }();
-  return path;
-}
-
-int run(const std::string& command, std::string& output)
-{
-  const std::string log = folder() + "/command.log";
-  const int status = std::system((command + " >" + log + " 2>&1").c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  output = text.str();
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 /// The stand-in's record: one JSON line per goal it received, written when the goal ended.
 std::vector<std::string> received()
@@ -132,9 +115,9 @@ TEST(RealRelay, ReplaySendsEachGoalToTheDriverOnceSimulated)
   const std::string csv = folder() + "/scripted.csv", bag = folder() + "/scripted.bag";
   exportCsv(vrrw_demos_test::scriptedPickPlace(250.0, 2e-4).demo.robots[0], csv);
   std::string output;
-  ASSERT_EQ(run(VRRW_TOOL " import " + csv + " --bag " + bag + " --robot ur5e", output), 0) << output;
+  ASSERT_EQ(run(VRRW_TOOL " import " + csv + " --bag " + bag + " --robot ur5e", &output), 0) << output;
   const std::size_t before = received().size();
-  ASSERT_EQ(run(VRRW_TOOL " replay " + bag + " --mode real --yes", output), 0) << output;
+  ASSERT_EQ(run(VRRW_TOOL " replay " + bag + " --mode real --yes", &output), 0) << output;
   // the controller ran each goal in simulation and held it for the confirmation, then relayed it
   EXPECT_NE(output.find("replay: to the recorded start: SUCCEEDED"), std::string::npos) << output;
   EXPECT_NE(output.find("(real arm)"), std::string::npos) << output;  // progress while the real arm moves

@@ -25,18 +25,15 @@
 #include <vrrw_msgs/DemoStart.h>
 #include <vrrw_msgs/DemoStop.h>
 
+#include "tool_process.h"
+
+using vrrw_demos_test::folder;
+using vrrw_demos_test::run;
+using vrrw_demos_test::ToolProcess;
+
 namespace
 {
 const std::vector<std::string> kRobots{ "r1", "r2", "r3", "r4" };
-
-std::string folder()
-{
-  static const std::string path = [] {
-    char name[] = "/tmp/vrrw_recorder_test_XXXXXX";
-    return std::string(::mkdtemp(name));
-  }();
-  return path;
-}
 
 /// Starts recorder_node as a child; a file size limit (bytes) makes "disk full" without root.
 pid_t startRecorder(rlim_t file_size_limit = RLIM_INFINITY)
@@ -125,18 +122,6 @@ std::map<std::string, int> countPerTopic(const std::string& path)
   for (const rosbag::MessageInstance& m : rosbag::View(bag))
     ++counts[m.getTopic()];
   return counts;
-}
-
-int run(const std::string& command, std::string* output = nullptr)
-{
-  const std::string log = folder() + "/command.log";
-  const int status = std::system((command + " >" + log + " 2>&1").c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (output)
-    *output = text.str();
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 std::string slurp(const std::string& path)
@@ -258,67 +243,6 @@ TEST(Recorder, BagToCsvToBagToCsvIsIdenticalAndStandardToolsReadIt)
 
 namespace
 {
-/// A program with its arguments as given (no shell), in \a cwd; its output through a pipe, line by line.
-class Child
-{
-public:
-  Child(const std::vector<std::string>& args, const std::string& cwd = "")
-  {
-    int ends[2];
-    EXPECT_EQ(::pipe(ends), 0);
-    pid_ = ::fork();
-    if (pid_ == 0)
-    {
-      ::dup2(ends[1], STDOUT_FILENO);
-      ::dup2(ends[1], STDERR_FILENO);
-      ::close(ends[0]);
-      if (!cwd.empty() && ::chdir(cwd.c_str()) != 0)
-        ::_exit(126);
-      std::vector<char*> argv;
-      for (const std::string& arg : args)
-        argv.push_back(const_cast<char*>(arg.c_str()));
-      argv.push_back(nullptr);
-      ::execv(argv[0], argv.data());
-      ::_exit(127);
-    }
-    ::close(ends[1]);
-    out_ = ::fdopen(ends[0], "r");
-  }
-  ~Child()
-  {
-    std::fclose(out_);
-    if (pid_ > 0)
-      wait();
-  }
-  bool line(std::string& text)
-  {
-    char buffer[8192];
-    if (!std::fgets(buffer, sizeof(buffer), out_))
-      return false;
-    text = buffer;
-    return true;
-  }
-  std::string rest()
-  {
-    std::string all, text;
-    while (line(text))
-      all += text;
-    return all;
-  }
-  void signal(int number) { ::kill(pid_, number); }
-  int wait()
-  {
-    int status = 0;
-    ::waitpid(pid_, &status, 0);
-    pid_ = -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-
-private:
-  pid_t pid_ = -1;
-  FILE* out_ = nullptr;
-};
-
 bool exists(const std::string& path)
 {
   struct stat info;
@@ -449,7 +373,7 @@ TEST(Recorder, RecordSaysWhatItRecordsAndHowMuchAndStopsOnCtrlC)
   const pid_t recorder = startRecorder();
   // a name with every character a shell or a launch file would take for its own
   const std::string name = "a|b&c';touch PWNED;'$(touch PWNED2)<x>.bag";
-  Child record({ VRRW_SCRIPT, "record", "running", "--out", name, "--robots", "r1,r2,r3,r4" }, folder());
+  ToolProcess record({ VRRW_SCRIPT, "record", "running", "--out", name, "--robots", "r1,r2,r3,r4" }, folder());
   std::string first, second, text;
   ASSERT_TRUE(record.line(first));
   ASSERT_TRUE(record.line(second));
@@ -478,12 +402,12 @@ TEST(Recorder, PlotTakesHostilePathsAsPathsAndSaysWhenItCannotWrite)
 {
   const std::string bag = folder() + "/x';touch PWNED;'.bag";
   ASSERT_EQ(::link((folder() + "/lossless.bag").c_str(), bag.c_str()), 0);
-  Child plot({ VRRW_TOOL, "plot", bag, "--robot", "r1", "--out", "y';touch PWNED;'.png" }, folder());
+  ToolProcess plot({ VRRW_TOOL, "plot", bag, "--robot", "r1", "--out", "y';touch PWNED;'.png" }, folder());
   const std::string output = plot.rest();
   EXPECT_EQ(plot.wait(), 0) << output;
   EXPECT_TRUE(exists(folder() + "/y';touch PWNED;'.png")) << output;
   EXPECT_FALSE(exists(folder() + "/PWNED"));
-  Child refused({ VRRW_TOOL, "plot", bag, "--robot", "r1", "--out", "/proc/vrrw_plot.png" });
+  ToolProcess refused({ VRRW_TOOL, "plot", bag, "--robot", "r1", "--out", "/proc/vrrw_plot.png" });
   EXPECT_EQ(refused.rest(), "vrrw demos plot: /proc/vrrw_plot.png: cannot create a file in /proc (No such file or directory)\n");
   EXPECT_EQ(refused.wait(), 2);
 }

@@ -18,30 +18,15 @@
 #include <vrrw_demos/demo_csv.h>
 
 #include "scripted_demo.h"
+#include "tool_process.h"
+
+using vrrw_demos_test::folder;
+using vrrw_demos_test::run;
+using vrrw_demos_test::ToolProcess;
 
 namespace
 {
 std::string g_mode = "fake";
-
-std::string folder()
-{
-  static const std::string path = [] {
-    char name[] = "/tmp/vrrw_replay_test_XXXXXX";
-    return std::string(::mkdtemp(name));
-  }();
-  return path;
-}
-
-int run(const std::string& command, std::string& output)
-{
-  const std::string log = folder() + "/command.log";
-  const int status = std::system((command + " >" + log + " 2>&1").c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  output = text.str();
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 double field(const std::string& output, const std::string& key)
 {
@@ -56,7 +41,7 @@ std::string scriptedBag()
     return bag;
   vrrw_demos::exportCsv(vrrw_demos_test::scriptedPickPlace(250.0, 2e-4).demo.robots[0], csv);
   std::string output;
-  EXPECT_EQ(run(VRRW_TOOL " import " + csv + " --bag " + bag + " --robot ur5e", output), 0) << output;
+  EXPECT_EQ(run(VRRW_TOOL " import " + csv + " --bag " + bag + " --robot ur5e", &output), 0) << output;
   return bag;
 }
 }  // namespace
@@ -64,7 +49,7 @@ std::string scriptedBag()
 TEST(Replay, WholeDemonstrationFollowsTheDejitteredPath)
 {
   std::string output;
-  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode, output), 0) << output;
+  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode, &output), 0) << output;
   std::cout << output;
   EXPECT_NE(output.find("\"result\": \"SUCCEEDED\""), std::string::npos) << output;
   EXPECT_LE(field(output, "dejitter_max"), 1e-3);
@@ -83,81 +68,27 @@ TEST(Replay, WholeDemonstrationFollowsTheDejitteredPath)
 TEST(Replay, OneSegmentAndBadInput)
 {
   std::string output;
-  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --segment pick", output), 0) << output;
+  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --segment pick", &output), 0) << output;
   EXPECT_NE(output.find("\"result\": \"SUCCEEDED\""), std::string::npos) << output;
-  EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --segment wave", output), 2);
+  EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --segment wave", &output), 2);
   EXPECT_NE(output.find("has no segment 'wave' (found: near_pick, pick, close_gripper, back_to_near_pick, final, "
                         "open_gripper)"),
             std::string::npos)
       << output;
-  EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode real", output), 2);
+  EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode real", &output), 2);
   EXPECT_NE(output.find("--mode real, but /ur5e/controller runs in mode '" + g_mode + "'"), std::string::npos) << output;
   const std::string csv = folder() + "/other.csv", bag = folder() + "/other.bag";
   auto other = vrrw_demos_test::scriptedPickPlace(50.0).demo.robots[0];
   for (auto& name : other.joint_names)
     name = "ur5e_x" + name.substr(4);  // the robot's prefix, but not its joints
   vrrw_demos::exportCsv(other, csv);
-  ASSERT_EQ(run(VRRW_TOOL " import " + csv + " --bag " + bag + " --robot ur5e", output), 0) << output;
-  EXPECT_EQ(run(VRRW_TOOL " replay " + bag + " --mode " + g_mode, output), 2);
+  ASSERT_EQ(run(VRRW_TOOL " import " + csv + " --bag " + bag + " --robot ur5e", &output), 0) << output;
+  EXPECT_EQ(run(VRRW_TOOL " replay " + bag + " --mode " + g_mode, &output), 2);
   EXPECT_NE(output.find("of the running scene has joints [ ur5e_shoulder_pan_joint"), std::string::npos) << output;
 }
 
 namespace
 {
-/// The tool as a child whose output comes through a pipe (as when a user pipes it), line by line.
-class PipedTool
-{
-public:
-  explicit PipedTool(const std::vector<std::string>& args)
-  {
-    int ends[2];
-    EXPECT_EQ(::pipe(ends), 0);
-    pid_ = ::fork();
-    if (pid_ == 0)
-    {
-      ::dup2(ends[1], STDOUT_FILENO);
-      ::dup2(ends[1], STDERR_FILENO);
-      ::close(ends[0]);
-      std::vector<char*> argv{ const_cast<char*>(VRRW_TOOL) };
-      for (const std::string& arg : args)
-        argv.push_back(const_cast<char*>(arg.c_str()));
-      argv.push_back(nullptr);
-      ::execv(VRRW_TOOL, argv.data());
-      ::_exit(127);
-    }
-    ::close(ends[1]);
-    out_ = ::fdopen(ends[0], "r");
-  }
-  ~PipedTool()
-  {
-    if (out_)
-      std::fclose(out_);
-    if (pid_ > 0)
-      wait();
-  }
-  /// The next line; false at the end of the output.
-  bool line(std::string& text)
-  {
-    char buffer[4096];
-    if (!std::fgets(buffer, sizeof(buffer), out_))
-      return false;
-    text = buffer;
-    return true;
-  }
-  void signal(int number) { ::kill(pid_, number); }
-  int wait()
-  {
-    int status = 0;
-    ::waitpid(pid_, &status, 0);
-    pid_ = -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-
-private:
-  pid_t pid_ = -1;
-  FILE* out_ = nullptr;
-};
-
 /// The arm controller's goals as its action topics show them.
 class ArmGoals
 {
@@ -197,7 +128,7 @@ TEST(Replay, ProgressReachesAPipeWhileTheArmMoves)
 {
   ros::NodeHandle nh;
   ArmGoals goals(nh);
-  PipedTool tool({ "replay", scriptedBag(), "--mode", g_mode });
+  ToolProcess tool({ VRRW_TOOL, "replay", scriptedBag(), "--mode", g_mode });
   std::string text, progress;
   bool moving = false;
   while (tool.line(text))
@@ -221,15 +152,15 @@ TEST(Replay, BadSpeedsAndTolerancesSendNothing)
   std::string output;
   for (const char* speed : { "1e-300", "0", "-1", "11" })
   {
-    EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed " + speed, output), 2) << speed;
+    EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed " + speed, &output), 2) << speed;
     EXPECT_EQ(output, std::string("vrrw demos replay: --speed: ") + speed + " outside [0.1, 10]\n");
   }
   for (const char* speed : { "inf", "nan" })
   {
-    EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed " + speed, output), 2) << speed;
+    EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed " + speed, &output), 2) << speed;
     EXPECT_EQ(output, std::string("vrrw demos replay: --speed: '") + speed + "' is not a finite number\n");
   }
-  EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --tolerance 1e9", output), 2);
+  EXPECT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --tolerance 1e9", &output), 2);
   EXPECT_EQ(output, "vrrw demos replay: --tolerance: 1e9 outside [0, 0.01] rad\n");
   ros::WallDuration(0.5).sleep();
   EXPECT_EQ(goals.sent(), before);  // not even the approach
@@ -241,11 +172,11 @@ TEST(Replay, SpeedChangesThePaceWhereTheLimitsAllow)
   // of 3.14): exactly 10 / 0.8 s; at 2 they would not (9.2 rad/s^2): only those stretches slow, the rest keeps
   // the pace
   std::string output;
-  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed 0.8", output), 0) << output;
+  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed 0.8", &output), 0) << output;
   EXPECT_NEAR(field(output, "recorded"), 10.0, 0.01) << output;
   EXPECT_NEAR(field(output, "duration"), 10.0 / 0.8, 0.001) << output;
   EXPECT_EQ(field(output, "stretches"), 0.0) << output;
-  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed 2", output), 0) << output;
+  ASSERT_EQ(run(VRRW_TOOL " replay " + scriptedBag() + " --mode " + g_mode + " --speed 2", &output), 0) << output;
   EXPECT_GT(field(output, "duration"), 5.0) << output;
   EXPECT_LT(field(output, "duration"), 10.0) << output;
   EXPECT_GT(field(output, "stretches"), 0.0) << output;
@@ -256,7 +187,7 @@ TEST(Replay, CtrlCCancelsTheRunningGoal)
 {
   ros::NodeHandle nh;
   ArmGoals goals(nh);
-  PipedTool tool({ "replay", scriptedBag(), "--mode", g_mode, "--speed", "0.2" });
+  ToolProcess tool({ VRRW_TOOL, "replay", scriptedBag(), "--mode", g_mode, "--speed", "0.2" });
   std::string text, all;
   while (tool.line(text) && text.find("replay: near_pick") == std::string::npos)
     all += text;
