@@ -21,7 +21,8 @@ def demo(*args, timeout=300):
 class QuickDemoTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.out = tempfile.mkdtemp(prefix='vrrw_demo_test_')
+        # a report folder whose name a shell would run: the frames are captured without one
+        cls.out = tempfile.mkdtemp(prefix="vrrw_demo_test_';touch PWNED;'")
         start = time.monotonic()
         cls.result = demo('--quick', '--seed', '3', '--out', cls.out)
         cls.seconds = time.monotonic() - start
@@ -101,6 +102,7 @@ class QuickDemoTest(unittest.TestCase):
         for name in ('index.html', 'report.md', 'joints.png', 'top_view.png', 'strips.png'):
             self.assertGreater(os.path.getsize(os.path.join(self.out, name)), 1000, name)
         self.assertEqual(len([f for f in os.listdir(os.path.join(self.out, 'frames')) if f.endswith('.png')]), 18)
+        self.assertFalse(os.path.exists('PWNED'))  # the folder's name was never shell text
 
 
 class BadSceneTest(unittest.TestCase):

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
+#include <vrrw_demos/run_program.h>
 #include <vrrw_evaluation/trial_outcome.h>
 
 #include "bag_instructions.h"
@@ -100,13 +102,14 @@ void PickPlaceDemo::capture(const std::string& row, std::size_t boundary, bool f
   if (!frames || options_.capture_command.empty())
     return;
   ros::WallDuration(0.15).sleep();  // rviz draws the last tf
-  std::string command = options_.capture_command;
+  // the command's words as arguments, the file as one of them: no shell ever reads the --out path
   const std::string file = options_.out + "/frames/" + row + "_" + std::to_string(boundary) + ".png";
-  const auto at = command.find("{file}");
-  if (at != std::string::npos)
-    command.replace(at, 6, "'" + file + "'");
-  if (std::system(command.c_str()) != 0)
-    progress("frame capture failed: " + command);
+  std::istringstream words(options_.capture_command);
+  std::vector<std::string> argv;
+  for (std::string word; words >> word;)
+    argv.push_back(word == "{file}" ? file : word);
+  if (vrrw_demos::runProgram(argv) != 0)
+    progress("frame capture failed: " + options_.capture_command + " (file " + file + ")");
 }
 
 bool PickPlaceDemo::perform(const std::string& row, bool frames, const std::vector<Instruction>& instructions,

@@ -23,7 +23,7 @@ struct DemoOptions
   std::uint64_t seed = 1;
   std::string out = "demo_report";
   int shown_trials = 2;             ///< DMP trials with a row of frames
-  std::string capture_command;      ///< shell command with {file}: saves one rviz frame; empty: none
+  std::string capture_command;      ///< program and arguments (no shell), {file} one of them: saves one rviz frame; empty: none
   GraspGeometry grasp;
   TrialSpread spread;
   Eigen::Vector2d final_offset{ -0.10, -0.25 };  ///< where the demonstration puts the drill, from its start
