@@ -73,13 +73,13 @@ class Refusals(unittest.TestCase):
 
     def test_record_refuses_before_recording(self):
         with tempfile.NamedTemporaryFile(suffix='.bag') as existing:
-            self.refused(f'vrrw: record: --out: {existing.name}: exists; not overwritten', 'record', 'running',
-                         '--out', existing.name)
+            self.refused(f'vrrw record: --out: {existing.name}: exists; not overwritten (remove it or choose another '
+                         'name)', 'record', 'running', '--out', existing.name)
         self.refused('vrrw: record: --out: required (FILE.bag)', 'record', 'running')
         self.refused("vrrw: record: --robots: 'a b' is not a list of robot names (a,b)", 'record', 'running',
                      '--out', '/tmp/vrrw_never.bag', '--robots', 'a b')
-        self.refused('vrrw: record: --out: /nonexistent_dir: no such directory', 'record', 'running', '--out',
-                     '/nonexistent_dir/a.bag')
+        self.refused('vrrw record: --out: /nonexistent_dir/a.bag: cannot create a file in /nonexistent_dir (No such '
+                     'file or directory)', 'record', 'running', '--out', '/nonexistent_dir/a.bag')
 
     def test_an_explicit_trials_beats_the_quick_preset(self):
         import run_demo
@@ -108,7 +108,7 @@ class WithoutWorkspace(unittest.TestCase):
 
     def test_record_running(self):
         self.check('record', 'running', '--out', os.path.join(tempfile.mkdtemp(), 'a|b.bag'),
-                   line_start='vrrw: record: ')
+                   line_start='vrrw record: ')
 
     def test_demos_replay(self):
         folder = tempfile.mkdtemp(prefix='vrrw_options_')

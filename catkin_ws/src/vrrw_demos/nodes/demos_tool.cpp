@@ -5,8 +5,8 @@
 //   plot BAG --out FILE.png [--robot R]                    joints, gripper and segment boundaries
 //   replay BAG --mode fake|physics|real [--robot R] [--segment NAME] [--speed S] [--tolerance RAD] [--yes]
 //   record --out FILE.bag [--robots a,b] [--wait S]        with the workspace's recorder until Ctrl-C
-// Exit codes: 0 done, 1 a failure while running (a goal failed, a recording stopped), 2 bad input or usage
-// (one line on stderr naming the file, topic, option or field; nothing was written or sent).
+// Exit codes: 0 done, 1 a failure while running (a goal failed, a recording stopped, no workspace runs), 2 bad
+// input or usage (one line on stderr naming the file, topic, option or field; nothing was written or sent).
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -21,6 +21,7 @@
 #include <vrrw_demos/segmentation.h>
 
 #include <vrrw_common/options.h>
+#include <vrrw_common/ros/workspace_check.h>
 
 #include "../src/ros/record_command.h"
 #include "../src/ros/replay_command.h"
@@ -174,13 +175,19 @@ int main(int argc, char** argv)
   std::signal(SIGINT, [](int) { g_interrupted = true; });
   std::signal(SIGTERM, [](int) { g_interrupted = true; });
   const std::string command = argc > 1 ? argv[1] : "";
+  const std::string tool = command == "record" ? "vrrw record" : "vrrw demos " + command;  // as the user typed it
   try
   {
     return run(command, argc, argv);
   }
-  catch (const std::exception& e)  // DemoError: bad input; invalid_argument / runtime_error: usage, options
+  catch (const vrrw_common::WorkspaceError& e)  // no (whole) workspace: a failure to run, not bad input
   {
-    std::cerr << "vrrw demos " << command << ": " << e.what() << "\n";
+    std::cerr << tool << ": " << e.what() << "\n";
+    return 1;
+  }
+  catch (const std::exception& e)  // DemoError: bad input; OptionError / invalid_argument: usage, options
+  {
+    std::cerr << tool << ": " << e.what() << "\n";
     return 2;
   }
 }

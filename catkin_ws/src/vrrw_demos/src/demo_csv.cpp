@@ -82,8 +82,11 @@ void checkRobotName(const std::string& robot)
 void checkImported(const RobotTrack& track, const std::string& source)
 {
   const std::string prefix = track.robot + "_";
+  const auto anonymous = [](const std::string& joint) {  // the seed's q1..qn: no robot named, none claimed
+    return joint.size() > 1 && joint[0] == 'q' && joint.find_first_not_of("0123456789", 1) == std::string::npos;
+  };
   for (const std::string& joint : track.joint_names)
-    if (joint.rfind(prefix, 0) != 0)
+    if (joint.rfind(prefix, 0) != 0 && !anonymous(joint))
       throw DemoError(source + ":1: joint '" + joint.substr(0, 48) + "' is not one of robot '" + track.robot +
                       "' (its joints are named " + prefix + "<joint>)");
   const auto outside = [&](std::size_t row, const std::string& column, double value, double bound) {

@@ -32,6 +32,7 @@ void exportCsv(const RobotTrack& track, const std::string& path);
 void checkRobotName(const std::string& robot);
 
 /// \brief Reads a track of robot \a robot from a CSV file: its joints must be the robot's (named
-/// `<robot>_<joint>`), every value within the bounds above. Errors are DemoError "FILE:LINE: reason".
+/// `<robot>_<joint>`; the seed's anonymous q1..qn pass, naming no robot), every value within the bounds above.
+/// Errors are DemoError "FILE:LINE: reason".
 RobotTrack importCsv(const std::string& path, const std::string& robot);
 }  // namespace vrrw_demos

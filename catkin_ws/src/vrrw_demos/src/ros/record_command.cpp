@@ -79,8 +79,15 @@ RecordRequest parseRequest(int argc, char** argv)
       throw DemoError("--out: " + request.file + ": the working directory is unreadable");
     request.file = std::string(cwd) + "/" + request.file;
   }
-  refuseTaken(request.file);
-  std::remove(temporaryBeside(request.file).c_str());  // the folder takes a new file
+  try
+  {
+    refuseTaken(request.file);
+    std::remove(temporaryBeside(request.file).c_str());  // the folder takes a new file
+  }
+  catch (const DemoError& e)
+  {
+    throw DemoError(std::string("--out: ") + e.what());
+  }
   request.robots = splitList(options.text("robots", ""));
   request.wait = options.number("wait", request.wait, vrrw_common::Range::closed(0.0, 600.0, "s"));
   request.check_only = options.flag("check");
