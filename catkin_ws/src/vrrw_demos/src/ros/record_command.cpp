@@ -163,11 +163,11 @@ std::string megabytes(uint64_t bytes)
 }
 
 /// Stops the recording through /demos/stop; prints where it is; the exit code.
-int stopRecording()
+int stopRecording(vrrw_common::PersistentServices& services)
 {
   vrrw_msgs::DemoStop call;
   std::string error;
-  if (!vrrw_common::services().tryCall("/demos/stop", call, &error))
+  if (!services.tryCall("/demos/stop", call, &error))
   {
     std::cerr << "record: " << error << ": the recording stays in the bag or its .active file (./vrrw demos recover "
                  "FILE.active)\n";
@@ -204,10 +204,12 @@ int runRecord(int argc, char** argv, const std::atomic<bool>& interrupted)
       throw DemoError("recorder_node did not advertise /demos/start within 20 s");
   }
 
+  // links of this run's own, closed before ROS stops (not a process-wide set closing at exit)
+  vrrw_common::PersistentServices services;
   vrrw_msgs::DemoStart call;
   call.request.file = request.file;
   call.request.robots = request.robots;
-  vrrw_common::services().call("/demos/start", call);
+  services.call("/demos/start", call);
   if (!call.response.success)
     throw DemoError(call.response.message);
   std::string topics;
@@ -225,7 +227,7 @@ int runRecord(int argc, char** argv, const std::atomic<bool>& interrupted)
     if (!latest.failure.empty())
     {
       std::cerr << "record: " << latest.failure << "\n";
-      stopRecording();
+      stopRecording(services);
       return 1;
     }
     if ((ros::WallTime::now() - when).toSec() > kRecorderGone && !ros::service::exists("/demos/stop", false))
@@ -243,6 +245,6 @@ int runRecord(int argc, char** argv, const std::atomic<bool>& interrupted)
                 << latest.messages << " messages, " << megabytes(latest.bytes) << ", " << latest.topics.size()
                 << " topics" << std::endl;
   }
-  return stopRecording();
+  return stopRecording(services);
 }
 }  // namespace vrrw_demos

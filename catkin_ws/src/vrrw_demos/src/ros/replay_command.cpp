@@ -215,9 +215,12 @@ private:
 
 bool resetPhysics(RobotControllers& controllers)
 {
+  // a link of this call's own, closed here while ROS runs (a process-wide one closing at exit, after the
+  // spinner and roscpp's own objects, crashed the tool once after its last line)
+  vrrw_common::PersistentServices services;
   std_srvs::Trigger call;
   std::string error;
-  if (!vrrw_common::services().tryCall("/physics/reset", call, &error) || !call.response.success)
+  if (!services.tryCall("/physics/reset", call, &error) || !call.response.success)
   {
     std::cerr << "replay: /physics/reset failed: " << (error.empty() ? call.response.message : error) << "\n";
     return false;
