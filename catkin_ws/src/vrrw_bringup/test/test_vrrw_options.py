@@ -81,6 +81,19 @@ class Refusals(unittest.TestCase):
         self.refused('vrrw record: --out: /nonexistent_dir/a.bag: cannot create a file in /nonexistent_dir (No such '
                      'file or directory)', 'record', 'running', '--out', '/nonexistent_dir/a.bag')
 
+    def test_scene_writes_its_urdf_beside_timing_and_robots(self):
+        folder = tempfile.mkdtemp(prefix='vrrw_options_')
+        for extra, stdout_start in (('--robots', 'ur5e\n'), ('--timing', '{"scene": "pick_place_drill"')):
+            urdf = os.path.join(folder, extra[2:] + '.urdf')
+            result = vrrw('scene', 'pick_place_drill', extra, '--urdf-out', urdf)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertTrue(result.stdout.startswith(stdout_start), result.stdout)
+            with open(urdf) as f:
+                self.assertIn('<robot name=', f.read())
+        self.refused('vrrw_scene: unknown option --urdf\nusage: vrrw_scene SCENE [--urdf-out FILE|-] [--robots] '
+                     '[--timing] [--no-cache]\n  SCENE is a shipped scene name or a scene YAML path; --robots prints the '
+                     'robot names', 'scene', 'pick_place_drill', '--urdf', 'x')
+
     def test_an_explicit_trials_beats_the_quick_preset(self):
         import run_demo
         self.assertEqual(run_demo.parse_args(['--launch', 'x', '--quick', '--trials', '5']).trials, 5)

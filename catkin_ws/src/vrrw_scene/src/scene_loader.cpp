@@ -26,14 +26,6 @@ namespace
 {
 constexpr const char* kCacheVersion = "vrrw-scene-2";
 
-std::string readFile(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 /// FNV-1a, 64 bit: a stable content key (std::hash is not stable across builds).
 struct ContentKey
 {
@@ -73,15 +65,15 @@ std::string contentKey(const SceneSpec& spec, const std::string& urdf_dir)
   std::sort(inputs.begin(), inputs.end());
   ContentKey key;
   key.add(kCacheVersion);
-  key.add(readFile(spec.file));
+  key.add(readWholeFile(spec.file));
   for (const auto& path : inputs)
   {
     key.add(fs::relative(path, urdf_dir).string());
-    key.add(readFile(path.string()));
+    key.add(readWholeFile(path.string()));
   }
   for (const auto& robot : spec.robots)
     if (!robot.description.empty())
-      key.add(readFile(robot.description));
+      key.add(readWholeFile(robot.description));
   return key.hex();
 }
 
@@ -285,7 +277,7 @@ Scene loadScene(const std::string& name_or_path, const LoadOptions& options)
   std::string urdf;
   if (options.use_cache && fs::is_regular_file(cached))
   {
-    urdf = readFile(cached);
+    urdf = readWholeFile(cached);
     scene.from_cache = true;
   }
   else

@@ -1,10 +1,13 @@
 #include "scene_spec.h"
 
+#include <cmath>
 #include <filesystem>
 #include <random>
 #include <regex>
 #include <set>
+#include <sstream>
 
+#include "physical_ranges.h"
 #include "yaml_field.h"
 
 namespace fs = std::filesystem;
@@ -43,6 +46,43 @@ std::string resolveFile(const YamlField& field, const std::string& scene_file)
   return fs::canonical(path).string();
 }
 
+/// A number as a person reads it (1e+30, 0.5).
+std::string number(double value)
+{
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+/// A pose in the cell: every coordinate within ranges::kMaxCoordinate.
+Eigen::Isometry3d placedPose(const YamlField& field)
+{
+  const Eigen::Isometry3d pose = field.asPose();
+  for (int axis = 0; axis < 3; ++axis)
+    if (std::abs(pose.translation()[axis]) > ranges::kMaxCoordinate)
+      field["xyz"].fail(number(pose.translation()[axis]) + " outside [-" + number(ranges::kMaxCoordinate) + ", " +
+                        number(ranges::kMaxCoordinate) + "] m (a cell's coordinates)");
+  return pose;
+}
+
+/// A number within [lo, hi], or the field's one-line error naming the range.
+double within(const YamlField& field, double lo, double hi, const std::string& unit)
+{
+  const double value = field.asDouble();
+  if (value < lo || value > hi)
+    field.fail(number(value) + " outside [" + number(lo) + ", " + number(hi) + "]" + (unit.empty() ? "" : " " + unit));
+  return value;
+}
+
+/// A length of an object: in (0, ranges::kMaxExtent] m.
+double extent(const YamlField& field)
+{
+  const double value = within(field, 0.0, ranges::kMaxExtent, "m");
+  if (value == 0.0)
+    field.fail("must be greater than zero, got 0");
+  return value;
+}
+
 RobotSpec parseRobot(const YamlField& entry, const Catalog& catalog, const std::string& scene_file)
 {
   entry.allowKeys({ "name", "model", "gripper", "description", "tip_link", "config", "base", "initial" });
@@ -77,7 +117,7 @@ RobotSpec parseRobot(const YamlField& entry, const Catalog& catalog, const std::
   if (entry.has("config"))
     robot.config = resolveFile(entry["config"], scene_file);
   if (entry.has("base"))
-    robot.base = entry["base"].asPose();
+    robot.base = placedPose(entry["base"]);
   if (entry.has("initial"))
     for (const auto& joint : entry["initial"].keys())
       robot.initial[joint] = entry["initial"][joint].asDouble();
@@ -91,6 +131,9 @@ void drawRandomPlacement(const YamlField& random, std::mt19937& rng, Eigen::Isom
     if (!random.has(axis))
       return 0.0;
     const auto range = random[axis].asDoubles(2);
+    if (std::string(axis) != "yaw" && std::max(std::abs(range[0]), std::abs(range[1])) > ranges::kMaxCoordinate)
+      random[axis].fail("outside [-" + number(ranges::kMaxCoordinate) + ", " + number(ranges::kMaxCoordinate) +
+                        "] m (a cell's coordinates)");
     if (range[1] < range[0])
       random[axis].fail("the range [min, max] has min > max");
     return std::uniform_real_distribution<double>(range[0], range[1])(rng);
@@ -123,15 +166,15 @@ ObjectSpec parseObject(const YamlField& entry, const Catalog& catalog, const std
     entry["kind"].fail("unknown object kind '" + object.kind + "' (known: " + keyList(catalog.objects) +
                        ", box, cylinder, sphere, mesh)");
   if (entry.has("pose"))
-    object.pose = entry["pose"].asPose();
+    object.pose = placedPose(entry["pose"]);
   if (entry.has("random"))
     drawRandomPlacement(entry["random"], rng, object.pose);
   if (entry.has("mass"))
-    object.mass = positive(entry["mass"], true);
+    object.mass = within(entry["mass"], 0.0, ranges::kMaxMass, "kg");
   if (entry.has("friction"))
-    object.friction = positive(entry["friction"], true);
+    object.friction = within(entry["friction"], 0.0, ranges::kMaxFriction, "");
   if (entry.has("restitution"))
-    object.restitution = positive(entry["restitution"], true);
+    object.restitution = within(entry["restitution"], 0.0, 1.0, "");
   if (entry.has("fixed"))
     object.fixed = entry["fixed"].asBool();
   if (entry.has("size"))
@@ -140,11 +183,13 @@ ObjectSpec parseObject(const YamlField& entry, const Catalog& catalog, const std
     object.size = Eigen::Vector3d(size[0], size[1], size[2]);
     if (object.size.minCoeff() <= 0.0)
       entry["size"].fail("every extent must be greater than zero");
+    if (object.size.maxCoeff() > ranges::kMaxExtent)
+      entry["size"].fail(number(object.size.maxCoeff()) + " outside (0, " + number(ranges::kMaxExtent) + "] m");
   }
   if (entry.has("radius"))
-    object.radius = positive(entry["radius"], false);
+    object.radius = extent(entry["radius"]);
   if (entry.has("length"))
-    object.length = positive(entry["length"], false);
+    object.length = extent(entry["length"]);
   if (object.kind == "mesh")
     object.mesh = resolveFile(entry["mesh"], scene_file);
   if (entry.has("scale"))

@@ -64,14 +64,15 @@ std::string attribute(const XMLElement* element, const char* name)
   return value ? value : "";
 }
 
-std::string readFile(const std::string& path)
+}  // namespace
+
+std::string readWholeFile(const std::string& path)
 {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
 }
-}  // namespace
 
 std::string xacroDocument(const SceneSpec& scene, const Catalog& catalog, const std::string& urdf_dir)
 {
@@ -126,7 +127,7 @@ std::string runXacro(const std::string& xacro, const std::string& document_path)
   while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
     output.append(buffer.data(), n);
   const int status = pclose(pipe);
-  std::string message = readFile(errors);
+  std::string message = readWholeFile(errors);
   fs::remove(errors);
   if (status != 0 || output.empty())
   {
@@ -143,7 +144,7 @@ std::string runXacro(const std::string& xacro, const std::string& document_path)
 std::string addCustomRobot(const std::string& urdf, const RobotSpec& robot, const std::string& xacro)
 {
   const bool is_xacro = fs::path(robot.description).extension() == ".xacro";
-  const std::string text = is_xacro ? runXacro(xacro, robot.description) : readFile(robot.description);
+  const std::string text = is_xacro ? runXacro(xacro, robot.description) : readWholeFile(robot.description);
   checkUrdf(text, robot.description);
   XMLDocument custom;
   parse(custom, text, robot.description);

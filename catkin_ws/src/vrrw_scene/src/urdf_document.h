@@ -22,5 +22,8 @@ std::string addCustomRobot(const std::string& urdf, const RobotSpec& robot, cons
 void checkUrdf(const std::string& urdf, const std::string& source);
 
 /// \brief The document without the given links and the joints that lead to them.
+/// \brief The bytes of a file (binary); empty when it cannot be read: the scene library's one file reader.
+std::string readWholeFile(const std::string& path);
+
 std::string withoutLinks(const std::string& urdf, const std::set<std::string>& links);
 }  // namespace vrrw_scene

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "physical_ranges.h"
 #include "vrrw_scene/scene.h"
 
 using tinyxml2::XMLElement;
@@ -45,6 +46,11 @@ std::string str(double value)
   out << value;
   return out.str();
 }
+
+std::string outside(double value, double lo, double hi, const std::string& unit)
+{
+  return str(value) + " outside [" + str(lo) + ", " + str(hi) + "] " + unit + " (beyond any workspace cell)";
+}
 }  // namespace
 
 void checkJointMotion(const XMLElement& joint, const std::string& source)
@@ -70,11 +76,22 @@ void checkJointMotion(const XMLElement& joint, const std::string& source)
   const double upper = number(*limit, "upper", 0.0, source, owner, "limit upper");
   if (type != "continuous" && lower > upper)
     fail(source, *limit, owner, "limit lower", str(lower) + " is above the upper limit " + str(upper));
+  for (const auto& [field, value] : { std::pair{ "limit lower", lower }, std::pair{ "limit upper", upper } })
+    if (type != "continuous" && std::abs(value) > ranges::kMaxJointTravel)
+      fail(source, *limit, owner, field, outside(value, -ranges::kMaxJointTravel, ranges::kMaxJointTravel, "rad or m"));
+  if (limit->Attribute("effort"))
+  {
+    const double effort = number(*limit, "effort", 0.0, source, owner, "limit effort");
+    if (effort < 0.0 || effort > ranges::kMaxEffort)  // the drives' force limit: negative is no force at all
+      fail(source, *limit, owner, "limit effort", outside(effort, 0.0, ranges::kMaxEffort, "N m or N"));
+  }
   if (limit->Attribute("velocity"))
   {
     const double velocity = number(*limit, "velocity", 0.0, source, owner, "limit velocity");
     if (velocity <= 0.0)  // time parameterization divides by it; the controller could never move the joint
       fail(source, *limit, owner, "limit velocity", "must be greater than zero, got " + str(velocity));
+    if (velocity > ranges::kMaxVelocity)
+      fail(source, *limit, owner, "limit velocity", outside(velocity, 0.0, ranges::kMaxVelocity, "rad/s or m/s"));
   }
 }
 
@@ -89,6 +106,8 @@ void checkLinkInertia(const XMLElement& link, const std::string& source)
     const double value = number(*mass, "value", 0.0, source, owner, "inertial mass");
     if (value <= 0.0)
       fail(source, *mass, owner, "inertial mass", "must be greater than zero, got " + str(value));
+    if (value > ranges::kMaxMass)
+      fail(source, *mass, owner, "inertial mass", outside(value, 0.0, ranges::kMaxMass, "kg"));
   }
   const XMLElement* inertia = inertial->FirstChildElement("inertia");
   if (!inertia)
@@ -108,6 +127,9 @@ void checkLinkInertia(const XMLElement& link, const std::string& source)
     fail(source, *inertia, owner, "inertial inertia",
          "not positive semi-definite (principal moment " + str(principal.minCoeff()) + ")");
   const double largest = principal.maxCoeff();
+  if (largest > ranges::kMaxInertia)
+    fail(source, *inertia, owner, "inertial inertia",
+         "principal moment " + outside(largest, 0.0, ranges::kMaxInertia, "kg m^2"));
   if (largest > principal.sum() - largest + slack)
     fail(source, *inertia, owner, "inertial inertia",
          "principal moments " + str(principal[0]) + ", " + str(principal[1]) + ", " + str(principal[2]) +

@@ -167,11 +167,27 @@ INSTANTIATE_TEST_SUITE_P(
                  { "negative_inertia.urdf:5: link 'link1': inertial inertia ixx: must not be negative, got -0.01" } },
         BadUrdf{ "inertia_triangle.yaml",
                  { "inertia_triangle.urdf:9: link 'link2': inertial inertia: principal moments 0.005, 0.005, 0.02 "
-                   "break the triangle inequality (0.02 > 0.01)" } }),
+                   "break the triangle inequality (0.02 > 0.01)" } },
+        BadUrdf{ "negative_effort.yaml", { "negative_effort.urdf:14: joint 'joint1': limit effort: -10 outside "
+                                           "[0, 1e+06] N m or N (beyond any workspace cell)" } },
+        BadUrdf{ "huge_limits.yaml", { "huge_limits.urdf:14: joint 'joint1': limit lower: -1e+300 outside [-100, "
+                                       "100] rad or m (beyond any workspace cell)" } },
+        BadUrdf{ "huge_mass.yaml", { "huge_mass.urdf:5: link 'link1': inertial mass: 1e+30 outside [0, 10000] kg "
+                                     "(beyond any workspace cell)" } }),
     [](const testing::TestParamInfo<BadUrdf>& info) {
       const std::string file = info.param.scene;
       return file.substr(0, file.find('.'));
     });
+
+TEST(BadScene, PlacesAndMassesBeyondAnyCellAreRefused)
+{
+  EXPECT_EQ(errorOf("far_base.yaml").substr(errorOf("far_base.yaml").find("far_base.yaml")),
+            "far_base.yaml:6: robots[0].base.xyz: 1e+30 outside [-100, 100] m (a cell's coordinates)");
+  expectMentions(errorOf("far_object.yaml"),
+                 { "far_object.yaml:2:", "objects[0].pose.xyz", "-1e+30 outside [-100, 100] m" });
+  expectMentions(errorOf("heavy_object.yaml"),
+                 { "heavy_object.yaml:4:", "objects[0].mass", "1e+30 outside [0, 10000] kg" });
+}
 
 TEST(BadScene, UnknownSceneNameListsShippedScenes)
 {
