@@ -18,7 +18,7 @@
 #include <vrrw_common/options.h>
 #include <vrrw_trajectory/whole_file.h>
 
-#include "bag_demo.h"
+#include <vrrw_demos/ros/demo_bag.h>
 #include "replay.h"
 #include "segment_report.h"
 
@@ -57,7 +57,7 @@ RobotTrack pickTrack(const std::string& bag, const Options& options, Demonstrati
   RobotTrack track = demo.robots.front();
   if (options.has("segment"))
   {
-    const Segment segment = findSegment(bag, demo, track, options.text("segment"));
+    const Segment segment = findSegment(demo, track, options.text("segment"));
     track = slice(track, segment.start, segment.end);
   }
   return track;
@@ -101,7 +101,7 @@ int segmentCommand(const Options& options)
           ".segments.yaml";
   refuseExisting(out);
   const Demonstration demo = readDemonstration(bag);
-  const SegmentReport report = segmentReport(bag, demo, readMetadata(bag), SegmentationOptions{});
+  const SegmentReport report = segmentReport(bag, demo, SegmentationOptions{});
   vrrw_trajectory::writeWholeFile(out, report.yaml);
   std::cout << report.table << "written: " << out << "\n";
   return 0;
@@ -122,7 +122,7 @@ int plotCommand(const Options& options)
   exportCsv(track, csv);
   Demonstration one = demo;
   one.robots = { track };
-  vrrw_trajectory::writeWholeFile(segments, segmentReport(bag, one, readMetadata(bag), SegmentationOptions{}).yaml);
+  vrrw_trajectory::writeWholeFile(segments, segmentReport(bag, one, SegmentationOptions{}).yaml);
   const std::string command = "/usr/bin/python3 '" VRRW_DEMOS_SCRIPTS "/plot_demo.py' --csv '" + csv +
                               "' --segments '" + segments + "' --title '" + bag + " (" + track.robot + ")' --out '" +
                               out + "'";

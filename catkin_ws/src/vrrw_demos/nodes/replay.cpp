@@ -25,7 +25,7 @@
 #include <vrrw_scene/robot_config.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
-#include "bag_demo.h"
+#include <vrrw_demos/ros/demo_bag.h>
 #include "segment_report.h"
 
 namespace vrrw_demos
@@ -139,7 +139,7 @@ int runReplay(int argc, char** argv)
   double gripper_target = 0.0;
   if (options.has("segment"))
   {
-    const Segment segment = findSegment(bag, demo, track, options.text("segment"));
+    const Segment segment = findSegment(demo, track, options.text("segment"));
     track = slice(track, segment.start, segment.end);
     gripper_only = segment.gripper;
     gripper_target = segment.gripper_target;

@@ -4,11 +4,8 @@
 #include <memory>
 #include <sstream>
 
-#include <vrrw_common/joint_mapping.h>
 #include <vrrw_demos/demo_error.h>
-#include <vrrw_kinematics/kinematic_chain.h>
-#include <vrrw_kinematics/kinematics_error.h>
-#include <vrrw_kinematics/robot_model.h>
+#include <vrrw_demos/tcp_kinematics.h>
 #include <yaml-cpp/yaml.h>
 
 namespace vrrw_demos
@@ -19,46 +16,30 @@ namespace
 class TcpPoses
 {
 public:
-  TcpPoses(const BagMetadata& metadata, const RobotTrack& track)
+  TcpPoses(const Demonstration& demo, const RobotTrack& track)
   {
-    const auto robot = metadata.robots.find(track.robot);
-    if (metadata.robot_description.empty() || robot == metadata.robots.end() || robot->second.tcp_link.empty())
-      return;
     try
     {
-      const auto model = vrrw_kinematics::RobotModel::fromUrdf(metadata.robot_description);
-      chain_ = std::make_unique<vrrw_kinematics::KinematicChain>(model, model.links().front().name,
-                                                                 robot->second.tcp_link);
-      const auto chain_in_track = vrrw_common::findJoints(track.joint_names, chain_->jointNames());
-      if (!chain_in_track)
-      {
-        chain_.reset();
-        return;
-      }
-      index_ = *chain_in_track;
+      kinematics_ = std::make_unique<TcpKinematics>(demo, track);
     }
-    catch (const vrrw_kinematics::KinematicsError&)
+    catch (const DemoError&)
     {
-      chain_.reset();
+      kinematics_.reset();  // the table and YAML go without poses
     }
   }
 
   std::vector<double> at(const RobotState& state) const
   {
-    if (!chain_)
+    if (!kinematics_)
       return {};
-    Eigen::VectorXd q(static_cast<Eigen::Index>(index_.size()));
-    for (std::size_t j = 0; j < index_.size(); ++j)
-      q[static_cast<Eigen::Index>(j)] = state.positions[index_[j]];
-    const Eigen::Isometry3d pose = chain_->fk(q);
+    const Eigen::Isometry3d pose = kinematics_->at(state);
     const Eigen::Quaterniond rotation(pose.rotation());
     return { pose.translation().x(), pose.translation().y(), pose.translation().z(),
              rotation.x(), rotation.y(), rotation.z(), rotation.w() };
   }
 
 private:
-  std::unique_ptr<vrrw_kinematics::KinematicChain> chain_;
-  std::vector<std::size_t> index_;
+  std::unique_ptr<TcpKinematics> kinematics_;
 };
 
 std::string fixed(double value, int digits)
@@ -69,7 +50,7 @@ std::string fixed(double value, int digits)
 }
 }  // namespace
 
-SegmentReport segmentReport(const std::string& bag, const Demonstration& demo, const BagMetadata& metadata,
+SegmentReport segmentReport(const std::string& bag, const Demonstration& demo,
                             const SegmentationOptions& options)
 {
   YAML::Emitter out;
@@ -86,7 +67,7 @@ SegmentReport segmentReport(const std::string& bag, const Demonstration& demo, c
   for (const RobotTrack& track : demo.robots)
   {
     const Segmentation segmentation = segmentPickPlace(track, demo, options);
-    const TcpPoses tcp(metadata, track);
+    const TcpPoses tcp(demo, track);
     out << YAML::Key << track.robot << YAML::Value << YAML::BeginMap << YAML::Key << "segments" << YAML::Value
         << YAML::BeginSeq;
     table << "robot " << track.robot << "\n  instruction          start      end  object     tcp at end (x y z, m)\n";
@@ -124,18 +105,4 @@ SegmentReport segmentReport(const std::string& bag, const Demonstration& demo, c
   return { std::string(out.c_str()) + "\n", table.str() };
 }
 
-Segment findSegment(const std::string& bag, const Demonstration& demo, const RobotTrack& track,
-                    const std::string& name)
-{
-  const Segmentation segmentation = segmentPickPlace(track, demo);
-  std::string found;
-  for (const Segment& segment : segmentation.segments)
-  {
-    if (segment.name == name)
-      return segment;
-    found += (found.empty() ? "" : ", ") + segment.name;
-  }
-  throw DemoError(bag + ": robot '" + track.robot + "' has no segment '" + name + "' (found: " +
-                  (found.empty() ? "none" : found) + ")");
-}
 }  // namespace vrrw_demos

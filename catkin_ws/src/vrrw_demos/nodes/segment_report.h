@@ -4,7 +4,7 @@
 #include <vrrw_demos/demonstration.h>
 #include <vrrw_demos/segmentation.h>
 
-#include "bag_demo.h"
+#include <vrrw_demos/ros/demo_bag.h>
 
 namespace vrrw_demos
 {
@@ -16,10 +16,6 @@ struct SegmentReport
   std::string table;
 };
 
-SegmentReport segmentReport(const std::string& bag, const Demonstration& demo, const BagMetadata& metadata,
+SegmentReport segmentReport(const std::string& bag, const Demonstration& demo,
                             const SegmentationOptions& options);
-
-/// \brief The named segment of a robot, by segmentPickPlace; throws DemoError listing the ones found.
-Segment findSegment(const std::string& bag, const Demonstration& demo, const RobotTrack& track,
-                    const std::string& name);
 }  // namespace vrrw_demos

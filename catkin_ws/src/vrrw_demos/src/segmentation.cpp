@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <vrrw_demos/demo_error.h>
+
 namespace vrrw_demos
 {
 namespace
@@ -54,23 +56,15 @@ double distance(const Pose& a, const Pose& b)
                    std::pow(a.position[2] - b.position[2], 2));
 }
 
-const Pose* poseAt(const std::vector<TimedPose>& poses, double t)
-{
-  const TimedPose* best = nullptr;
-  for (const TimedPose& pose : poses)
-    if (pose.time <= t || !best)
-      best = &pose;
-  return best ? &best->pose : nullptr;
-}
-
 std::string heldObject(const Demonstration& demo, double from, double to, double moved)
 {
   std::string held;
   double most = moved;
-  for (const auto& [name, poses] : demo.objects)
+  for (const auto& entry : demo.objects)
   {
-    const Pose* a = poseAt(poses, from);
-    const Pose* b = poseAt(poses, to);
+    const std::string& name = entry.first;
+    const Pose* a = objectPoseAt(demo, name, from);
+    const Pose* b = objectPoseAt(demo, name, to);
     if (a && b && distance(*a, *b) > most)
     {
       most = distance(*a, *b);
@@ -138,6 +132,20 @@ std::vector<GripperAction> gripperActions(const RobotTrack& track, const Segment
   return actions;
 }
 }  // namespace
+
+Segment findSegment(const Demonstration& demo, const RobotTrack& track, const std::string& name)
+{
+  const Segmentation segmentation = segmentPickPlace(track, demo);
+  std::string found;
+  for (const Segment& segment : segmentation.segments)
+  {
+    if (segment.name == name)
+      return segment;
+    found += (found.empty() ? "" : ", ") + segment.name;
+  }
+  throw DemoError(demo.source + ": robot '" + track.robot + "' has no segment '" + name + "' (found: " +
+                  (found.empty() ? "none" : found) + ")");
+}
 
 RobotState stateAt(const RobotTrack& track, double t)
 {

@@ -47,6 +47,10 @@ std::vector<std::pair<double, double>> armMotions(const RobotTrack& track, const
 Segmentation segmentPickPlace(const RobotTrack& track, const Demonstration& demo,
                               const SegmentationOptions& options = {});
 
+/// \brief The instruction \a name of \a track by segmentPickPlace; throws DemoError naming the demonstration's
+/// source and listing the instructions found.
+Segment findSegment(const Demonstration& demo, const RobotTrack& track, const std::string& name);
+
 /// \brief The state at time t, linearly interpolated (clamped to the recorded span).
 RobotState stateAt(const RobotTrack& track, double t);
 

@@ -1,4 +1,4 @@
-#include "bag_demo.h"
+#include <vrrw_demos/ros/demo_bag.h>
 
 #include <algorithm>
 #include <regex>
@@ -183,7 +183,8 @@ void readTrack(rosbag::Bag& bag, const std::string& path, const BagMetadata& met
   rosbag::View goals(bag, rosbag::TopicQuery("/" + track.robot + "/gripper_controller/gripper_cmd/goal"));
   for (const rosbag::MessageInstance& message : goals)
     if (const auto goal = message.instantiate<control_msgs::GripperCommandActionGoal>())
-      track.gripper_goals.push_back({ message.getTime().toSec() - start, goal->goal.command.position });
+      track.gripper_goals.push_back(
+          { message.getTime().toSec() - start, goal->goal.command.position, goal->goal.command.max_effort });
 }
 }  // namespace
 
@@ -198,8 +199,10 @@ Demonstration readDemonstration(const std::string& path, const std::vector<std::
 {
   rosbag::Bag bag;
   openBag(bag, path);
-  const BagMetadata metadata = metadataOf(bag, path);
   Demonstration demo;
+  demo.source = path;
+  demo.metadata = metadataOf(bag, path);
+  const BagMetadata& metadata = demo.metadata;
   rosbag::View all(bag);
   demo.start_stamp = metadata.start_stamp > 0 ? metadata.start_stamp : all.getBeginTime().toSec();
 
@@ -247,6 +250,10 @@ Demonstration readDemonstration(const std::string& path, const std::vector<std::
         pose.pose = Pose{ { t.x, t.y, t.z }, { r.x, r.y, r.z, r.w } };
         demo.objects[transform.child_frame_id].push_back(pose);
       }
+  // in time order (objectPoseAt searches them): /tf and /tf_static may interleave
+  for (auto& entry : demo.objects)
+    std::stable_sort(entry.second.begin(), entry.second.end(),
+                     [](const TimedPose& a, const TimedPose& b) { return a.time < b.time; });
   return demo;
 }
 
