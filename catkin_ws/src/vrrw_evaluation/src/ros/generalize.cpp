@@ -4,10 +4,18 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <vrrw_evaluation/trial_outcome.h>
+#include <vrrw_skills/trial_outcome.h>
 
 namespace vrrw_evaluation
 {
+using vrrw_skills::judgeTrial;
+using vrrw_skills::PlanarPose;
+using vrrw_skills::planarPose;
+using vrrw_skills::placeOnTable;
+using vrrw_skills::sampleTrialPoses;
+using vrrw_skills::TrialObservation;
+using vrrw_skills::TrialOutcome;
+
 namespace
 {
 /// The arm goal of each arm instruction for a drill standing at `object`, through IK seeded with the

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <vrrw_evaluation/trial_outcome.h>
+#include <vrrw_skills/trial_outcome.h>
 
 #include "bag_instructions.h"
 

@@ -7,7 +7,7 @@
 
 #include <vrrw_evaluation/demo_report.h>
 #include <vrrw_evaluation/demonstration.h>
-#include <vrrw_evaluation/drill_poses.h>
+#include <vrrw_skills/trial_poses.h>
 #include <vrrw_evaluation/instruction_dmps.h>
 #include <vrrw_evaluation/pick_place_task.h>
 
@@ -25,7 +25,7 @@ struct DemoOptions
   int shown_trials = 2;             ///< DMP trials with a row of frames
   std::string capture_command;      ///< shell command with {file}: saves one rviz frame; empty: none
   GraspGeometry grasp;
-  TrialSpread spread;
+  vrrw_skills::TrialSpread spread;
   Eigen::Vector2d final_offset{ -0.10, -0.25 };  ///< where the demonstration puts the drill, from its start
   std::string table = "table";                  ///< the scene object the drill is set down on
   /// the carry's ghost plans are minimum-jerk at this fraction of the acceleration limits: the drill, held by

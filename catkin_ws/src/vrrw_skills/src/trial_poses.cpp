@@ -1,9 +1,9 @@
-#include <vrrw_evaluation/drill_poses.h>
+#include <vrrw_skills/trial_poses.h>
 
 #include <cmath>
 #include <random>
 
-namespace vrrw_evaluation
+namespace vrrw_skills
 {
 PlanarPose planarPose(const Eigen::Isometry3d& pose)
 {
@@ -41,4 +41,4 @@ std::vector<PlanarPose> sampleTrialPoses(const PlanarPose& around, const TrialSp
   }
   return poses;
 }
-}  // namespace vrrw_evaluation
+}  // namespace vrrw_skills

@@ -3,7 +3,7 @@
 #include <set>
 #include <string>
 
-namespace vrrw_evaluation
+namespace vrrw_skills
 {
 /// \brief What was seen of one pick-and-place in physics.
 struct TrialObservation
@@ -45,4 +45,4 @@ bool isFingerLink(const std::string& link);
 /// is a link of the robot (prefix "<robot>_") other than a finger, the other an obstacle.
 bool isArmCollision(const std::string& body_a, const std::string& body_b, const std::string& robot,
                     const std::set<std::string>& obstacles);
-}  // namespace vrrw_evaluation
+}  // namespace vrrw_skills

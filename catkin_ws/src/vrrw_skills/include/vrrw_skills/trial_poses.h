@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace vrrw_evaluation
+namespace vrrw_skills
 {
 /// \brief Where an object stands on the table: position in the world's x-y plane and yaw about z.
 struct PlanarPose
@@ -31,4 +31,4 @@ Eigen::Isometry3d placeOnTable(const Eigen::Isometry3d& reference, const PlanarP
 /// half-width on one axis), so the edges of the claimed range are exercised, not only its centre.
 std::vector<PlanarPose> sampleTrialPoses(const PlanarPose& around, const TrialSpread& spread, std::size_t count,
                                          std::uint64_t seed);
-}  // namespace vrrw_evaluation
+}  // namespace vrrw_skills

@@ -1,8 +1,8 @@
-#include <vrrw_evaluation/trial_outcome.h>
+#include <vrrw_skills/trial_outcome.h>
 
 #include <gtest/gtest.h>
 
-using namespace vrrw_evaluation;
+using namespace vrrw_skills;
 
 namespace
 {

@@ -1,11 +1,11 @@
-#include <vrrw_evaluation/drill_poses.h>
-#include <vrrw_evaluation/trial_outcome.h>
+#include <vrrw_skills/trial_poses.h>
+#include <vrrw_skills/trial_outcome.h>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-namespace vrrw_evaluation
+namespace vrrw_skills
 {
 double planarDistance(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b)
 {
@@ -55,4 +55,4 @@ bool isArmCollision(const std::string& body_a, const std::string& body_b, const 
   auto ofRobot = [&](const std::string& body) { return body.rfind(prefix, 0) == 0 && !isFingerLink(body); };
   return (ofRobot(body_a) && obstacles.count(body_b)) || (ofRobot(body_b) && obstacles.count(body_a));
 }
-}  // namespace vrrw_evaluation
+}  // namespace vrrw_skills
