@@ -21,7 +21,7 @@ import time
 import actionlib
 import rospy
 import tf2_ros
-from control_msgs.msg import GripperCommandAction, GripperCommandGoal
+from control_msgs.msg import GripperCommand, GripperCommandAction, GripperCommandGoal
 from geometry_msgs.msg import PoseStamped
 from std_msgs.msg import Float64
 from std_srvs.srv import SetBool, Trigger
@@ -95,7 +95,7 @@ class Teacher:
     def grip(self, position, effort, action):
         self.gripper.wait_for_server(rospy.Duration(30.0))
         start = rospy.Time.now().to_sec()
-        self.gripper.send_goal_and_wait(GripperCommandGoal(command={'position': position, 'max_effort': effort}))
+        self.gripper.send_goal_and_wait(GripperCommandGoal(command=GripperCommand(position=position, max_effort=effort)))
         self.truth.append({'action': action, 'start': start, 'end': rospy.Time.now().to_sec()})
 
     def hand_down(self, start, end, orientation, seconds, action):
