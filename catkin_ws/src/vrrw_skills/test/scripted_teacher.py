@@ -25,6 +25,7 @@ from control_msgs.msg import GripperCommand, GripperCommandAction, GripperComman
 from geometry_msgs.msg import PoseStamped
 from std_msgs.msg import Float64
 from std_srvs.srv import SetBool, Trigger
+from vrrw_msgs.msg import Event
 from vrrw_msgs.srv import DemoStart, DemoStop, GhostExecute, GhostPlan, GhostSetPose, GhostSupportSurface
 
 
@@ -51,6 +52,8 @@ class Teacher:
         self.gripper = actionlib.SimpleActionClient(self.ns + 'gripper_controller/gripper_cmd', GripperCommandAction)
         self.hand_pose = rospy.Publisher('/operator/right/pose', PoseStamped, queue_size=10)
         self.hand_grip = rospy.Publisher('/operator/right/grip', Float64, queue_size=10)
+        self.events = []
+        rospy.Subscriber('/operator/events', Event, self.on_event)
 
     def call(self, name, kind, *request):
         if name not in self.services:
@@ -98,25 +101,43 @@ class Teacher:
         self.gripper.send_goal_and_wait(GripperCommandGoal(command=GripperCommand(position=position, max_effort=effort)))
         self.truth.append({'action': action, 'start': start, 'end': rospy.Time.now().to_sec()})
 
+    def on_event(self, event):
+        if event.detail.startswith('hand right '):
+            self.events.append(event.kind)
+
+    def hold_hand(self, point, orientation, grip, kind, seconds):
+        """Holds the hand at point (publishing at a tracker's 100 Hz) until the interaction node reports kind."""
+        self.events = []
+        end = time.monotonic() + seconds
+        while time.monotonic() < end and kind not in self.events:
+            message = self.pose(point, orientation)
+            message.header.stamp = rospy.Time.now()
+            self.hand_pose.publish(message)
+            self.hand_grip.publish(Float64(grip))
+            time.sleep(0.01)
+        if kind and kind not in self.events:
+            sys.exit(f'scripted_teacher: the interaction node did not report {kind} of the hand within {seconds} s')
+
     def hand_down(self, start, end, orientation, seconds, action):
-        """Free-drive: the hand closes on the wrist at the flange and pulls it down (minimum jerk), then lets go."""
+        """Free-drive: the hand closes on the wrist at the flange, pulls it down (minimum jerk), lets go."""
         self.call(self.ns + 'free_drive', SetBool, True)
         flange, _ = self.frame(self.args.robot + '_flange')
         tcp, _ = self.frame(self.args.robot + '_tcp')
         grab = tuple(f - t for f, t in zip(flange, tcp))
+        at = lambda point: tuple(p + g for p, g in zip(point, grab))  # noqa: E731
         t0 = rospy.Time.now().to_sec()
-        rate = 100.0
-        steps = int(seconds * rate)
-        for k in range(-30, steps + 30):  # 0.3 s of holding before and after the pull
-            u = min(max(k / steps, 0.0), 1.0)
-            s = u * u * u * (10 - 15 * u + 6 * u * u)
-            point = tuple(a + s * (b - a) + g for a, b, g in zip(start, end, grab))
-            message = self.pose(point, orientation)
+        self.hold_hand(at(start), orientation, 1.0, 'grab', 10.0)
+        steps = int(seconds * 100)
+        for k in range(steps + 1):
+            s = k / steps
+            s = s * s * s * (10 - 15 * s + 6 * s * s)
+            message = self.pose(at(tuple(a + s * (b - a) for a, b in zip(start, end))), orientation)
             message.header.stamp = rospy.Time.now()
             self.hand_pose.publish(message)
             self.hand_grip.publish(Float64(1.0))
-            time.sleep(1.0 / rate)  # a tracker's rate is its own
-        self.hand_grip.publish(Float64(0.0))
+            time.sleep(0.01)  # a tracker's rate is its own
+        self.hold_hand(at(end), orientation, 1.0, '', 0.3)
+        self.hold_hand(at(end), orientation, 0.0, 'release', 10.0)
         self.call(self.ns + 'free_drive', SetBool, False)
         self.truth.append({'action': action, 'start': t0, 'end': rospy.Time.now().to_sec()})
 
