@@ -268,10 +268,12 @@ Segment findSegment(const Demonstration& demo, const RobotTrack& track, const st
 RobotState stateAt(const RobotTrack& track, double t)
 {
   const auto& states = track.states;
-  if (t <= states.front().time)
-    return states.front();
-  if (t >= states.back().time)
-    return states.back();
+  if (t <= states.front().time || t >= states.back().time)
+  {
+    RobotState out = t <= states.front().time ? states.front() : states.back();
+    out.time = t;  // the recorded state held: a slice from before the first state still starts at its start
+    return out;
+  }
   const auto after = std::upper_bound(states.begin(), states.end(), t,
                                       [](double time, const RobotState& s) { return time < s.time; });
   const RobotState& b = *after;

@@ -23,7 +23,9 @@
 #include <vrrw_kinematics/robot_model.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
-#include "../src/ros/bag_instructions.h"
+#include <vrrw_demos/ros/demo_bag.h>
+#include <vrrw_evaluation/annotations.h>
+#include <vrrw_evaluation/joint_paths.h>
 
 using namespace vrrw_evaluation;
 
@@ -178,18 +180,20 @@ int run(const std::string& scene, const std::string& bag, const std::string& out
     return std::cerr << "demo: relay: " << error << "\n", 2;
   const std::vector<std::string>& joints = cell.robot.arm_joints;
   std::vector<Segment> instructions;
-  BagTrack track;
+  vrrw_demos::RobotTrack track;
   try
   {
-    instructions = bagInstructions(bag, 0.0);  // both in the bag's absolute stamps
-    track = bagTrack(bag, cell.robot.name, joints, 0.0);
+    const vrrw_demos::Demonstration shown = vrrw_demos::readDemonstration(bag, { cell.robot.name });
+    instructions = annotatedInstructions(shown);
+    track = shown.robots.front();
   }
   catch (const std::exception& e)
   {
     return std::cerr << "demo: relay: " << e.what() << "\n", 1;
   }
-  if (instructions.size() != kInstructions.size() || track.gripper_goals.size() < 2)
-    return std::cerr << "demo: relay: " << bag << ": not the six instructions and two gripper goals of a demonstration\n", 1;
+  if (instructions.size() != kInstructions.size() || track.gripper_goals.size() < 2 || track.joint_names != joints)
+    return std::cerr << "demo: relay: " << bag << ": not the six instructions and two gripper goals of a demonstration"
+                     << " of " << cell.robot.name << "\n", 1;
 
   ros::NodeHandle node;
   ros::AsyncSpinner spinner(2);
@@ -218,7 +222,7 @@ int run(const std::string& scene, const std::string& bag, const std::string& out
   const auto from = relay.measured(joints);
   if (!from)
     return std::cerr << "demo: relay: no /" << cell.robot.name << "/joint_states with the arm's joints\n", 1;
-  const std::vector<double> start = positionsAt(track.arm, instructions.front().start);
+  const std::vector<double> start = vrrw_demos::stateAt(track, instructions.front().start).positions;
   relayed.push_back(relay.arm("to_the_recorded_start", approach(joints, *from, start, max_velocity)));
   progress(relayed.back());
   std::size_t gripper_goal = 0;
@@ -228,13 +232,12 @@ int run(const std::string& scene, const std::string& bag, const std::string& out
       break;
     if (isGripperInstruction(instruction.name))
     {
-      const auto& [position, effort] = track.gripper_goals[std::min(gripper_goal++, track.gripper_goals.size() - 1)];
-      relayed.push_back(relay.gripper(instruction.name, position, effort));
+      const vrrw_demos::GripperGoal& goal = track.gripper_goals[std::min(gripper_goal++, track.gripper_goals.size() - 1)];
+      relayed.push_back(relay.gripper(instruction.name, goal.position, goal.max_effort));
     }
     else
     {
-      vrrw_trajectory::JointTrajectory motion = slice(track.arm, instruction.start, instruction.end);
-      addVelocities(motion);
+      const vrrw_trajectory::JointTrajectory motion = instructionGoal(track, instruction.start, instruction.end);
       relay.waitUntilAt(joints, motion.points.front().positions, 0.005, 2.0);
       relayed.push_back(relay.arm(instruction.name, motion));
     }

@@ -16,6 +16,7 @@
 #include <vrrw_scene/scene_loader.h>
 #include <vrrw_skills/evaluation.h>
 #include <vrrw_skills/poses.h>
+#include <vrrw_skills/skill_error.h>
 #include <vrrw_skills/skill_learning.h>
 #include <vrrw_skills/skill_plan.h>
 #include <vrrw_skills/trial_outcome.h>

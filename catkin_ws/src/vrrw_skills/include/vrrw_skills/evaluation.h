@@ -28,6 +28,7 @@ struct TrialResult
   bool reachable = false;     ///< every goal had a collision-free IK (the run started)
   bool success = false;
   double place_error_m = 0.0;     ///< the object's end to the demonstrated end, table plane
+  double place_angle_deg = 0.0;   ///< its yaw to the demonstrated end's
   double cycle_seconds = 0.0;     ///< simulated, first goal to gripper open
   double planning_ms = 0.0;       ///< wall: IK, rollouts and checks of the run
   std::string reason;             ///< why it failed; empty on success

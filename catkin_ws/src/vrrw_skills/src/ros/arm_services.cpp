@@ -1,4 +1,4 @@
-#include "arm_services.h"
+#include <vrrw_skills/ros/arm_services.h>
 
 #include <vrrw_msgs/AttachObject.h>
 #include <vrrw_msgs/CheckState.h>

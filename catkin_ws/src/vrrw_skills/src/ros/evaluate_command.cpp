@@ -23,8 +23,8 @@
 #include <vrrw_trajectory/trajectory_error.h>
 #include <vrrw_trajectory/whole_file.h>
 
-#include "arm_services.h"
-#include "skill_trials.h"
+#include <vrrw_skills/ros/arm_services.h>
+#include <vrrw_skills/ros/skill_trials.h>
 #include "workspace_process.h"
 
 namespace vrrw_skills

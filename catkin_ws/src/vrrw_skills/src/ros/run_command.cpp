@@ -10,7 +10,7 @@
 #include <vrrw_skills/skill_error.h>
 #include <vrrw_skills/skill_yaml.h>
 
-#include "skill_runner.h"
+#include <vrrw_skills/ros/skill_runner.h>
 
 namespace vrrw_skills
 {

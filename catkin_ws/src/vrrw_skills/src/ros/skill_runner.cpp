@@ -1,4 +1,4 @@
-#include "skill_runner.h"
+#include <vrrw_skills/ros/skill_runner.h>
 
 #include <chrono>
 #include <cstdio>
@@ -50,8 +50,8 @@ SkillScene SkillRunner::scene() const
   return scene;
 }
 
-void SkillRunner::execute(const std::vector<PlannedStep>& steps, RunReport& report,
-                          const std::function<void(const std::string&)>& progress)
+void SkillRunner::execute(const std::vector<PlannedStep>& steps, RunReport& report, const Progress& progress,
+                          const Progress& done)
 {
   for (const PlannedStep& step : steps)
   {
@@ -69,10 +69,12 @@ void SkillRunner::execute(const std::vector<PlannedStep>& steps, RunReport& repo
       arm_.execute(step.instruction, step.trajectory);
     }
     report.instruction_seconds.push_back({ step.instruction, (ros::Time::now() - start).toSec() });
+    if (done)
+      done(step.instruction);
   }
 }
 
-RunReport SkillRunner::run(const std::function<void(const std::string&)>& progress)
+RunReport SkillRunner::run(const Progress& progress, const Progress& done)
 {
   RunReport report;
   if (arm_.speed() > kRestSpeed)
@@ -88,7 +90,7 @@ RunReport SkillRunner::run(const std::function<void(const std::string&)>& progre
   report.planning_seconds += secondsSince(start);
   progress(format("planned the approach in %.0f ms", 1000.0 * report.planning_seconds));
   const ros::Time cycle_start = ros::Time::now();
-  execute(approach, report, progress);
+  execute(approach, report, progress, done);
   // holding it: the planning scene carries the object with the hand from here
   services_.attach(object_, true);
   try
@@ -104,7 +106,7 @@ RunReport SkillRunner::run(const std::function<void(const std::string&)>& progre
     const double carry_seconds = secondsSince(start);
     report.planning_seconds += carry_seconds;
     progress(format("planned the carry in %.0f ms", 1000.0 * carry_seconds));
-    execute(carry, report, progress);
+    execute(carry, report, progress, done);
   }
   catch (...)
   {

@@ -1,4 +1,4 @@
-#include "skill_trials.h"
+#include <vrrw_skills/ros/skill_trials.h>
 
 #include <cmath>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include <vrrw_skills/skill_error.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
-#include "skill_runner.h"
+#include <vrrw_skills/ros/skill_runner.h>
 
 namespace vrrw_skills
 {
@@ -97,7 +97,8 @@ void SkillTrials::reset(const Eigen::Isometry3d& object, const std::function<voi
 }
 
 TrialResult SkillTrials::trial(int index, const PlanarPose& pose,
-                               const std::function<void(const std::string&)>& progress)
+                               const std::function<void(const std::string&)>& progress,
+                               const std::function<void(const std::string&)>& done)
 {
   TrialResult result;
   result.trial = index;
@@ -124,7 +125,7 @@ TrialResult SkillTrials::trial(int index, const PlanarPose& pose,
   SkillRunner runner(skill_, arm_, kinematics_, object_);
   try
   {
-    const RunReport run = runner.run(progress);
+    const RunReport run = runner.run(progress, done);
     result.reachable = true;
     result.cycle_seconds = run.cycle_seconds;
     result.planning_ms = 1000.0 * run.planning_seconds;
@@ -147,6 +148,7 @@ TrialResult SkillTrials::trial(int index, const PlanarPose& pose,
   result.success = outcome.success;
   result.reason = outcome.reason;
   result.place_error_m = outcome.final_error_m;
+  result.place_angle_deg = outcome.final_angle_deg;
   result.object_end = seen_.object_end.translation();
   result.tcp_path = path_;
   return result;

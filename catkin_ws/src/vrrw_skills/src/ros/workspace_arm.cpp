@@ -1,4 +1,4 @@
-#include "workspace_arm.h"
+#include <vrrw_skills/ros/workspace_arm.h>
 
 #include <algorithm>
 #include <atomic>

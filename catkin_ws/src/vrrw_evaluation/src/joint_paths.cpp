@@ -1,21 +1,15 @@
-#include <vrrw_evaluation/demonstration.h>
+#include <vrrw_evaluation/joint_paths.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include <vrrw_demos/segmentation.h>
+
 namespace vrrw_evaluation
 {
 using vrrw_trajectory::JointTrajectory;
 using vrrw_trajectory::TrajectoryPoint;
-
-const Segment& Demonstration::segment(const std::string& name) const
-{
-  for (const Segment& s : segments)
-    if (s.name == name)
-      return s;
-  throw std::invalid_argument("the demonstration has no segment '" + name + "'");
-}
 
 std::vector<double> positionsAt(const JointTrajectory& trajectory, double t)
 {
@@ -35,21 +29,6 @@ std::vector<double> positionsAt(const JointTrajectory& trajectory, double t)
   for (std::size_t j = 0; j < q.size(); ++j)
     q[j] = a.positions[j] + s * (b.positions[j] - a.positions[j]);
   return q;
-}
-
-JointTrajectory slice(const JointTrajectory& trajectory, double start, double end)
-{
-  JointTrajectory out;
-  out.joint_names = trajectory.joint_names;
-  out.points.push_back({ 0.0, positionsAt(trajectory, start), {}, {} });
-  for (const TrajectoryPoint& p : trajectory.points)
-    if (p.time > start + kEndGap && p.time < end - kEndGap)
-      out.points.push_back({ p.time - start, p.positions, p.velocities, {} });
-  out.points.push_back({ end - start, positionsAt(trajectory, end), {}, {} });
-  if (end - start <= 0.0 || out.points.size() < 3)
-    throw std::invalid_argument("slice [" + std::to_string(start) + ", " + std::to_string(end) +
-                                "] s holds fewer than 3 samples");
-  return out;
 }
 
 double largestJointDifference(const std::vector<double>& a, const std::vector<double>& b)
@@ -100,5 +79,30 @@ void addVelocities(JointTrajectory& trajectory)
     for (std::size_t j = 0; j < p[k].positions.size(); ++j)
       p[k].velocities[j] = (p[k + 1].positions[j] - p[k - 1].positions[j]) / (p[k + 1].time - p[k - 1].time);
   }
+}
+vrrw_demos::RobotTrack asTrack(JointTrajectory trajectory, const std::string& robot)
+{
+  addVelocities(trajectory);
+  vrrw_demos::RobotTrack track;
+  track.robot = robot;
+  track.joint_names = trajectory.joint_names;
+  for (const TrajectoryPoint& p : trajectory.points)
+    track.states.push_back({ p.time, p.positions, p.velocities, 0.0 });
+  return track;
+}
+
+JointTrajectory instructionGoal(const vrrw_demos::RobotTrack& track, double start, double end)
+{
+  // s: recorded states this close to an end are left out (the interpolated end stands for them), so the goal has
+  // no near-zero interval (a stamp 0.1 ms after the start would ask for any speed)
+  constexpr double kEndGap = 0.005;
+  JointTrajectory goal;
+  goal.joint_names = track.joint_names;
+  const auto states = vrrw_demos::slice(track, start, end).states;
+  for (std::size_t k = 0; k < states.size(); ++k)
+    if (k == 0 || k + 1 == states.size() || (states[k].time > start + kEndGap && states[k].time < end - kEndGap))
+      goal.points.push_back({ states[k].time - start, states[k].positions, {}, {} });
+  addVelocities(goal);
+  return goal;
 }
 }  // namespace vrrw_evaluation

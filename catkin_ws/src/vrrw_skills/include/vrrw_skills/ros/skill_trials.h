@@ -16,8 +16,8 @@
 #include <vrrw_skills/skill.h>
 #include <vrrw_skills/trial_outcome.h>
 
-#include "arm_services.h"
-#include "workspace_arm.h"
+#include <vrrw_skills/ros/arm_services.h>
+#include <vrrw_skills/ros/workspace_arm.h>
 
 namespace vrrw_skills
 {
@@ -30,8 +30,10 @@ public:
               vrrw_common::PersistentServices& services, std::string object, std::set<std::string> obstacles);
 
   /// \brief Trial \a index with the object at \a pose (on the table as the demonstration's start stood): the arm
-  /// home and open, the object placed, the skill run, the outcome judged. Progress lines through \a progress.
-  TrialResult trial(int index, const PlanarPose& pose, const std::function<void(const std::string&)>& progress);
+  /// home and open, the object placed, the skill run, the outcome judged. Progress lines through \a progress,
+  /// \a done (when given) at the end of each instruction (SkillRunner::run).
+  TrialResult trial(int index, const PlanarPose& pose, const std::function<void(const std::string&)>& progress,
+                    const std::function<void(const std::string&)>& done = {});
 
   /// s of simulated time the object is given to come to rest on the table (placed, or released).
   static constexpr double kSettle = 0.5;
