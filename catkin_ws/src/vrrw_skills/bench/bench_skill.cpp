@@ -1,10 +1,14 @@
 // vrrw_bench_skill: how long `skill learn` takes on a bag, and how long planning one trial of `skill run` takes
 // (IK of every goal, the DMP rollouts, every state checked for collisions) with vrrw_kinematics in-process, the
 // same work the planning node does behind its services. Progress on stderr, last line JSON.
-//   vrrw_bench_skill --bag BAG --object NAME [--scene pick_place_drill] [--robot R] [--trials 20] [--seed 1]
-//                    [--repetitions 5]
+//   vrrw_bench_skill --bag BAG --object NAME [--scene pick_place_drill] [--arm R] [--trials 20] [--seed 1]
+//                    [--spread DX,DY,DYAW_DEG] [--repetitions 5]
+// --arm: the scene's robot that plans (default the taught one; another arm follows the Cartesian DMPs by IK).
+// "planned": the poses whose every goal has a collision-free IK and whose every motion is free (what a trial needs
+// before it can run), so --spread 0.15,0.15,60 says how much of that spread the arm can do at all.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -71,6 +75,9 @@ public:
     return vrrw_skills::toPose(arm_.basePose(state_) * arm_.ikSolver().chain().fk(vector(joints)));
   }
 
+  /// \brief The arm's joints in the scene's initial state.
+  Eigen::VectorXd home() const { return arm_.jointValues(state_); }
+
   /// \brief The object at \a pose, free; then held by the TCP at \a grasp (the arm's joints there).
   void place(const std::string& object, const Eigen::Isometry3d& pose) { world_.setObjectPose(object, pose); }
   void hold(const std::string& object, const std::vector<double>& grasp, const std::string& tcp_link,
@@ -97,11 +104,10 @@ int main(int argc, char** argv)
   try
   {
     const vrrw_common::Options options(argc, argv, 1,
-                                       { "bag", "object", "scene", "robot", "trials", "seed", "repetitions" });
+                                       { "bag", "object", "scene", "arm", "trials", "seed", "spread", "repetitions" });
     const std::string bag = options.text("bag");
     vrrw_skills::LearnOptions learn;
     learn.object = options.text("object");
-    learn.robot = options.text("robot", "");
     const std::size_t repetitions = options.count("repetitions", 5, 1, 1000);
 
     std::vector<double> learn_ms;
@@ -118,10 +124,11 @@ int main(int argc, char** argv)
     const vrrw_scene::Scene scene = vrrw_scene::loadScene(options.text("scene", "pick_place_drill"));
     auto world = vrrw_kinematics::CollisionWorld::fromScene(scene);
     world.loadOrComputeAllowedCollisions(scene.cache_dir);
+    const std::string arm_name = options.text("arm", skill.robot);
     const auto robot = std::find_if(scene.robots.begin(), scene.robots.end(),
-                                    [&](const vrrw_scene::Robot& r) { return r.name == skill.robot; });
+                                    [&](const vrrw_scene::Robot& r) { return r.name == arm_name; });
     if (robot == scene.robots.end())
-      throw std::invalid_argument("--scene: no robot '" + skill.robot + "'");
+      throw std::invalid_argument("--scene: no robot '" + arm_name + "'");
     const Eigen::VectorXd state = vrrw_kinematics::initialState(world.model(), scene);
     LibraryArm arm(world, *robot, state);
     std::vector<std::string> fingers;
@@ -132,22 +139,34 @@ int main(int argc, char** argv)
     vrrw_skills::EvaluationOptions trials;
     trials.trials = options.count("trials", 20, 1, 1000);
     trials.seed = options.count("seed", 1, 0, vrrw_common::Options::kMaxCount);
+    if (options.has("spread"))
+    {
+      const auto spread = options.list("spread", 3, vrrw_common::Range::closed(0.0, 1e3));
+      trials.spread = { spread[0], spread[1], spread[2] * M_PI / 180.0 };
+    }
     std::vector<double> plan_ms;
     std::size_t planned = 0;
     for (const auto& pose : vrrw_skills::evaluationPoses(skill, trials))
     {
       vrrw_skills::SkillScene here;
       here.robot = robot->name;
+      here.max_acceleration = vrrw_kinematics::armAccelerationLimits(*robot);
+      for (const std::string& joint : robot->arm_joints)
+        here.max_velocity.push_back(
+            world.model().joints()[static_cast<std::size_t>(world.model().jointIndex(joint))].max_velocity);
       here.arm_joints = robot->arm_joints;
-      here.joints = skill.joints_home;
+      const Eigen::VectorXd home = arm.home();
+      here.joints.assign(home.data(), home.data() + home.size());
       here.object = vrrw_skills::toPose(vrrw_skills::placeOnTable(vrrw_skills::toIsometry(skill.object_start), pose));
       arm.place(skill.object, vrrw_skills::toIsometry(here.object));
       vrrw_skills::SkillPlanner planner(skill, arm);
       const auto start = Clock::now();
+      bool held = false;
       try
       {
         planner.approach(here);
         arm.hold(skill.object, planner.goals().at("pick"), robot->tcp_link, fingers);
+        held = true;
         here.joints = planner.goals().at("pick");
         planner.carry(here, skill.object_in_hand);
         ++planned;
@@ -157,14 +176,16 @@ int main(int argc, char** argv)
         std::cerr << "vrrw_bench_skill: refused: " << e.what() << "\n";
       }
       plan_ms.push_back(millisecondsSince(start));
-      arm.release(skill.object);
+      if (held)
+        arm.release(skill.object);
     }
     std::printf("vrrw_bench_skill: %zu of %zu trials planned, median %.1f ms each (IK, rollouts, collision checks)\n",
                 planned, plan_ms.size(), median(plan_ms));
     std::printf("{\"bench\":\"skill\",\"bag\":\"%s\",\"learn_ms\":%.1f,\"plan_ms\":%.2f,\"plan_ms_max\":%.2f,"
-                "\"trials\":%zu,\"planned\":%zu,\"target_learn_ms\":2000,\"target_plan_ms\":100}\n",
+                "\"trials\":%zu,\"planned\":%zu,\"spread\":[%g,%g,%g],\"target_learn_ms\":2000,"
+                "\"target_plan_ms\":100}\n",
                 bag.c_str(), median(learn_ms), median(plan_ms), *std::max_element(plan_ms.begin(), plan_ms.end()),
-                plan_ms.size(), planned);
+                plan_ms.size(), planned, trials.spread.x, trials.spread.y, trials.spread.yaw * 180.0 / M_PI);
     return 0;
   }
   catch (const std::exception& e)

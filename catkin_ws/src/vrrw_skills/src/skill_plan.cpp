@@ -135,10 +135,19 @@ void SkillPlanner::solveGoals(const SkillScene& scene, const CartesianPose& obje
     poses_[name] = poses.at(name);
     if (taughtArm(scene))
       seed = instruction->joints_end;
-    // the grasp has the fingers around the object: its collisions are the pick's check's to judge
-    const IkAnswer answer = arm_.ik(poses_[name], seed, name != "pick");
+    // near_pick must touch nothing; at the grasp the fingers are around the object, and from there on the
+    // object is in the hand: those goals may touch the object where it stands now (the pieces' checks judge
+    // the rest)
+    const bool touches_object = name != "near_pick";
+    const IkAnswer answer = arm_.ik(poses_[name], seed, !touches_object);
     if (!answer.joints)
       throw SkillRefusal(name + ": no IK for its goal: " + answer.reason);
+    if (touches_object)
+    {
+      const ContactPair pair = arm_.check(*answer.joints);
+      if (pair.touching() && pair.a != skill_.object && pair.b != skill_.object)
+        throw SkillRefusal(name + ": no IK for its goal: collision (" + pair.a + " - " + pair.b + ")");
+    }
     goals_[name] = *answer.joints;
     seed = *answer.joints;
   }

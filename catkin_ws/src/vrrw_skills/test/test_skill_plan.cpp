@@ -141,12 +141,17 @@ TEST(SkillPlan, CollisionsAreRefusedExceptTheFingersAtTheGraspAndTheObjectOnItsS
     return q[2] < 0.97 ? ContactPair{ "toy_left_inner_finger", "box" } : ContactPair{};
   };
   EXPECT_NO_THROW(planner.approach(scene));
-  // the wrist touching the table on the way down is not
+  // the wrist touching the table on the way down is not, nor at the grasp
   arm.touches = [](const std::vector<double>& q) {
-    return q[2] < 1.0 ? ContactPair{ "toy_wrist_3_link", "table" } : ContactPair{};
+    return q[2] < 1.03 && q[2] > 1.0 ? ContactPair{ "toy_wrist_3_link", "table" } : ContactPair{};
   };
   const std::string wrist = refusalOf([&] { planner.approach(scene); });
   EXPECT_EQ(wrist.rfind("pick: collision on the way: toy_wrist_3_link would touch table at ", 0), 0u) << wrist;
+  arm.touches = [](const std::vector<double>& q) {
+    return q[2] < 0.96 ? ContactPair{ "toy_wrist_3_link", "table" } : ContactPair{};
+  };
+  EXPECT_EQ(refusalOf([&] { planner.approach(scene); }),
+            "pick: no IK for its goal: collision (toy_wrist_3_link - table)");
   // held, the box may touch the table where it stood and where it is set down, not on the way
   arm.touches = [](const std::vector<double>&) { return ContactPair{}; };
   planner.approach(sceneWith(skill, skill.object_start));
