@@ -23,9 +23,11 @@ using vrrw_demos::Demonstration;
 using vrrw_demos::RobotTrack;
 using vrrw_demos::Segment;
 
-/// s: a pause cut out of a motion is replaced by this much of a straight bridge (the arm drifts a little while
-/// it rests: a hold, the payload's sag), so the learned path has no step.
-constexpr double kBridge = 0.1;
+/// s: a pause longer than this is cut to this much of a straight bridge (the arm drifts a little while it rests:
+/// a hold, the payload's sag, so the learned path has no step); shorter stops are kept as shown. A person's
+/// hesitation goes, a stop that belongs to the motion stays: the drill, held by friction, stops swinging in the
+/// half second above the place the demo's carry rests there (cut to 0.1 s, one of 20 trials toppled it).
+constexpr double kBridge = 0.5;
 /// m: an object that moved less than this between the start and the end of a recording never moved.
 constexpr double kObjectMoved = 0.005;
 
@@ -323,13 +325,13 @@ vrrw_dmp::DmpParameters skillDmpParameters()
 vrrw_trajectory::JointTrajectory motionWithoutPauses(const RobotTrack& track, double start, double end,
                                                      double period, const vrrw_demos::SegmentationOptions& options)
 {
-  // the motions, those less than two bridges apart kept as one (cutting a short pause saves nothing)
+  // the motions, those less than a bridge apart kept as one
   std::vector<std::pair<double, double>> motions;
   for (const auto& motion : vrrw_demos::armMotions(vrrw_demos::slice(track, start, end), options))
   {
     if (!(motion.second > motion.first))
       continue;
-    if (!motions.empty() && motion.first - motions.back().second < 2.0 * kBridge)
+    if (!motions.empty() && motion.first - motions.back().second < kBridge)
       motions.back().second = std::min(motion.second, end);
     else
       motions.push_back({ std::max(motion.first, start), std::min(motion.second, end) });

@@ -1,14 +1,18 @@
 #pragma once
-// A skill built in code (no bag, no URDF) and a toy arm whose joints are its TCP pose, for the core's tests.
+// A skill built in code (no bag, no URDF), a toy arm whose joints are its TCP pose, and a demonstration built in
+// code as the learner reads a bag's, for the core's tests.
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include <vrrw_demos/demonstration.h>
 #include <vrrw_dmp/quaternion_maps.h>
 #include <vrrw_skills/poses.h>
 #include <vrrw_skills/skill.h>
 #include <vrrw_skills/skill_learning.h>
+#include <vrrw_demos/segmentation.h>
 #include <vrrw_skills/skill_plan.h>
 
 namespace vrrw_skills_test
@@ -149,4 +153,78 @@ public:
   }
   CartesianPose tcp(const std::vector<double>& joints) override { return poseOf(joints); }
 };
+}  // namespace vrrw_skills_test
+
+namespace vrrw_skills_test
+{
+/// A robot whose joints are its TCP's x, y and z (a URDF of three prismatic joints), for demonstrations built
+/// in code that the learner reads as it reads a bag's.
+inline const char* kXyzRobot = R"(<robot name="xyz">
+  <link name="world"/><link name="bot_x"/><link name="bot_y"/><link name="bot_tcp"/>
+  <joint name="bot_x_joint" type="prismatic"><parent link="world"/><child link="bot_x"/><axis xyz="1 0 0"/>
+    <limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
+  <joint name="bot_y_joint" type="prismatic"><parent link="bot_x"/><child link="bot_y"/><axis xyz="0 1 0"/>
+    <limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
+  <joint name="bot_z_joint" type="prismatic"><parent link="bot_y"/><child link="bot_tcp"/><axis xyz="0 0 1"/>
+    <limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
+</robot>)";
+
+/// A pick-and-place by the xyz robot at 100 Hz with pauses: a box at (0.4, 0.1, 0.8) taken 15 cm above its
+/// centre (the TCP at 0.95), lifted, carried 30 cm in y and set down; the box follows the TCP while held.
+inline vrrw_demos::Demonstration xyzPickPlace(const std::string& source = "xyz.bag")
+{
+  struct Move
+  {
+    double start, duration;
+    Eigen::Vector3d to;
+  };
+  const Eigen::Vector3d home(0.2, 0.3, 1.2);
+  const std::vector<Move> moves{ { 0.5, 1.5, { 0.4, 0.1, 1.07 } },  { 3.0, 1.0, { 0.4, 0.1, 0.95 } },
+                                 { 5.5, 1.0, { 0.4, 0.1, 1.07 } },  { 8.0, 2.0, { 0.4, -0.2, 1.07 } },
+                                 { 10.5, 1.0, { 0.4, -0.2, 0.95 } } };
+  const double close = 4.3, open = 12.0, end = 13.5;
+  vrrw_demos::Demonstration demo;
+  demo.source = source;
+  demo.metadata.robot_description = kXyzRobot;
+  demo.metadata.robots["bot"].tcp_link = "bot_tcp";
+  demo.metadata.scene = "xyz_cell";
+  vrrw_demos::RobotTrack& track = demo.robots.emplace_back();
+  track.robot = "bot";
+  track.joint_names = { "bot_x_joint", "bot_y_joint", "bot_z_joint" };
+  track.gripper_joint = "bot_finger_joint";
+  track.gripper_goals = { { close, 0.8, 40.0 }, { open, 0.0, 0.0 } };
+  auto jerk = [](double u) { u = std::clamp(u, 0.0, 1.0); return u * u * u * (10 - 15 * u + 6 * u * u); };
+  for (int k = 0; k * 0.01 <= end; ++k)
+  {
+    const double t = k * 0.01;
+    Eigen::Vector3d q = home, from = home;
+    for (const Move& m : moves)
+    {
+      q = from + jerk((t - m.start) / m.duration) * (m.to - from);
+      if (t < m.start + m.duration)
+        break;
+      from = m.to;
+    }
+    vrrw_demos::RobotState state;
+    state.time = t;
+    state.positions = { q.x(), q.y(), q.z() };
+    state.velocities = { 0.0, 0.0, 0.0 };
+    state.gripper = 0.5 * jerk((t - close) / 0.4) - 0.5 * jerk((t - open) / 0.4);  // stalls at 0.5 on the box
+    track.states.push_back(state);
+  }
+  auto& box = demo.objects["box"];
+  for (int k = 0; k * 0.05 <= end; ++k)
+  {
+    const double t = k * 0.05;
+    const vrrw_demos::RobotState held = vrrw_demos::stateAt(track, std::clamp(t, close + 0.4, open));
+    vrrw_demos::TimedPose pose;
+    pose.time = t;
+    pose.pose.position[0] = held.positions[0];
+    pose.pose.position[1] = held.positions[1];
+    pose.pose.position[2] = held.positions[2] - 0.15;
+    box.push_back(pose);
+  }
+  demo.objects["table"].push_back({});
+  return demo;
+}
 }  // namespace vrrw_skills_test

@@ -34,8 +34,9 @@ struct LearnOptions
 /// or robot, no gripper closing or opening, an object that never moved, bags of different robots).
 Skill learnSkill(const std::vector<vrrw_demos::Demonstration>& demos, const LearnOptions& options);
 
-/// \brief A track's motion from \a start to \a end (s) as the DMPs learn it: the arm's pauses inside cut out
-/// (each replaced by a 0.1 s bridge), resampled every \a period from 0. Joint names from the track.
+/// \brief A track's motion from \a start to \a end (s) as the DMPs learn it: the arm's pauses inside longer than
+/// 0.5 s cut to 0.5 s (a person's hesitation goes, a stop that is part of the motion stays), resampled every
+/// \a period from 0. Joint names from the track.
 vrrw_trajectory::JointTrajectory motionWithoutPauses(const vrrw_demos::RobotTrack& track, double start, double end,
                                                      double period, const vrrw_demos::SegmentationOptions& options);
 }  // namespace vrrw_skills

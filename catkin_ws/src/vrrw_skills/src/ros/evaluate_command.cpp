@@ -150,10 +150,10 @@ int evaluateCommand(int argc, char** argv)
   const auto start = std::chrono::steady_clock::now();
   const vrrw_common::Options options(argc, argv, 2, { "scene", "robot", "object", "trials", "seed", "spread", "out" });
   options.expectPositional({ "SKILL.yaml" });
-  const std::string skill_file = options.positional().front();
-  const Skill skill = loadSkill(skill_file);
   EvaluationReport report;
   report.options = evaluationOptions(options);
+  const std::string skill_file = options.positional().front();
+  const Skill skill = loadSkill(skill_file);
   report.skill_file = skill_file;
   report.scene = options.text("scene");
   report.robot = options.text("robot", skill.robot);
