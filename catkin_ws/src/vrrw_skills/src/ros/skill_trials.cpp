@@ -62,6 +62,22 @@ void SkillTrials::goHome()
     off = std::max(off, std::abs(now[j] - home_[j]));
   if (off < 1e-3)
     return;
+  // first 10 cm straight up: a released object between the open fingers is a start the planner refuses
+  const auto tcp = arm_.pose(arm_.tcpLink());
+  if (tcp)
+  {
+    CartesianPose up = *tcp;
+    up.position.z() += 0.10;
+    const IkAnswer lift = kinematics_.ik(up, now, false);
+    if (lift.joints)
+    {
+      vrrw_trajectory::JointTrajectory motion;
+      motion.joint_names = arm_.armJoints();
+      const std::vector<double> rest(now.size(), 0.0);
+      motion.points = { { 0.0, now, rest, {} }, { 1.0, *lift.joints, rest, {} } };
+      arm_.execute("reset", motion);
+    }
+  }
   vrrw_msgs::Plan plan;
   plan.request.goal_joints.name = arm_.armJoints();
   plan.request.goal_joints.position = home_;
