@@ -30,6 +30,9 @@ using vrrw_demos::Segment;
 constexpr double kBridge = 0.5;
 /// m: an object that moved less than this between the start and the end of a recording never moved.
 constexpr double kObjectMoved = 0.005;
+/// s: an instruction moving longer than this (its pauses cut) is refused: a DMP of it would need more basis
+/// functions than a skill has, and its samples (at the sample period) more memory than a skill is worth.
+constexpr double kLongestMotion = 600.0;
 
 /// What one demonstration shows.
 struct Taught
@@ -191,8 +194,16 @@ SkillInstruction armInstruction(const Taught& demo, const Segment& segment, Fram
   out.joints_end = vrrw_demos::stateAt(track, segment.end).positions;
   out.start = keyframe(start_frame, toPose(tcp.at(out.joints_start)), demo);
   out.end = keyframe(endFrame(segment.name, options), toPose(tcp.at(out.joints_end)), demo);
+  if (segment.end - segment.start > 6.0 * kLongestMotion)  // before resampling it: pauses and all
+    throw SkillError(where(*demo.demo) + ": " + segment.name + ": " + std::to_string(int(segment.end - segment.start)) +
+                     " s long, more than the " + std::to_string(int(6.0 * kLongestMotion)) +
+                     " s a skill learns an instruction from");
   const auto motion = motionWithoutPauses(track, segment.start, segment.end, options.sample_period,
                                           options.segmentation);
+  if (motion.duration() > kLongestMotion)
+    throw SkillError(where(*demo.demo) + ": " + segment.name + ": " + std::to_string(int(motion.duration())) +
+                     " s of motion, more than the " + std::to_string(int(kLongestMotion)) +
+                     " s a skill learns an instruction from");
   std::vector<vrrw_dmp::CartesianSample> path;
   for (const auto& point : motion.points)
   {
