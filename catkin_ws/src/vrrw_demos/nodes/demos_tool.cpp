@@ -22,11 +22,11 @@
 
 #include <vrrw_common/options.h>
 #include <vrrw_common/ros/workspace_check.h>
+#include <vrrw_demos/ros/demo_bag.h>
 
 #include "../src/ros/record_command.h"
 #include "../src/ros/replay_command.h"
-#include "bag_demo.h"
-#include "segment_report.h"
+#include "../src/ros/segment_report.h"
 
 using namespace vrrw_demos;
 using vrrw_common::Options;
@@ -62,7 +62,7 @@ RobotTrack pickTrack(const std::string& bag, const Options& options, Demonstrati
   RobotTrack track = demo.robots.front();
   if (options.has("segment"))
   {
-    const Segment segment = findSegment(bag, demo, track, options.text("segment"));
+    const Segment segment = findSegment(demo, track, options.text("segment"));
     track = slice(track, segment.start, segment.end);
   }
   return track;
@@ -110,7 +110,7 @@ int segmentCommand(const Options& options)
           ".segments.yaml";
   refuseUnwritable(out);
   const Demonstration demo = readDemonstration(bag);
-  const SegmentReport report = segmentReport(bag, demo, readMetadata(bag), SegmentationOptions{});
+  const SegmentReport report = segmentReport(bag, demo, SegmentationOptions{});
   writeNewFile(out, report.yaml);
   std::cout << report.table << "written: " << out << "\n";
   return 0;
@@ -133,7 +133,7 @@ int plotCommand(const Options& options)
   exportCsv(track, csv);
   Demonstration one = demo;
   one.robots = { track };
-  writeNewFile(segments, segmentReport(bag, one, readMetadata(bag), SegmentationOptions{}).yaml);
+  writeNewFile(segments, segmentReport(bag, one, SegmentationOptions{}).yaml);
   const std::string picture = temporaryBeside(out);
   const int status = runProgram({ "/usr/bin/python3", VRRW_DEMOS_SCRIPTS "/plot_demo.py", "--csv", csv, "--segments",
                                   segments, "--title", bag + " (" + track.robot + ")", "--out", picture });

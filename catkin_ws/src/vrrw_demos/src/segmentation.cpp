@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <vrrw_demos/demo_error.h>
+#include <vrrw_demos/tcp_kinematics.h>
+
 namespace vrrw_demos
 {
 namespace
@@ -54,23 +57,15 @@ double distance(const Pose& a, const Pose& b)
                    std::pow(a.position[2] - b.position[2], 2));
 }
 
-const Pose* poseAt(const std::vector<TimedPose>& poses, double t)
-{
-  const TimedPose* best = nullptr;
-  for (const TimedPose& pose : poses)
-    if (pose.time <= t || !best)
-      best = &pose;
-  return best ? &best->pose : nullptr;
-}
-
 std::string heldObject(const Demonstration& demo, double from, double to, double moved)
 {
   std::string held;
   double most = moved;
-  for (const auto& [name, poses] : demo.objects)
+  for (const auto& entry : demo.objects)
   {
-    const Pose* a = poseAt(poses, from);
-    const Pose* b = poseAt(poses, to);
+    const std::string& name = entry.first;
+    const Pose* a = objectPoseAt(demo, name, from);
+    const Pose* b = objectPoseAt(demo, name, to);
     if (a && b && distance(*a, *b) > most)
     {
       most = distance(*a, *b);
@@ -78,6 +73,123 @@ std::string heldObject(const Demonstration& demo, double from, double to, double
     }
   }
   return held;
+}
+
+/// The fastest joint's speed at each state from the recorded positions: the slope of a least-squares line
+/// through the states within `window` (centred), so a held load's jitter and the drives' ripple average out
+/// (the recorded velocities carry them at full amplitude).
+std::vector<double> positionSpeeds(const RobotTrack& track, double window)
+{
+  const auto& states = track.states;
+  const std::size_t joints = states.empty() ? 0 : states.front().positions.size();
+  std::vector<double> speed(states.size(), 0.0);
+  // running sums over the window [a, b] of t, t^2 and, per joint, q and t q (t from the window's centre
+  // would be exact; times from the first state keep them small enough)
+  const double t0 = states.empty() ? 0.0 : states.front().time;
+  double n = 0.0, st = 0.0, stt = 0.0;
+  std::vector<double> sq(joints, 0.0), stq(joints, 0.0);
+  auto add = [&](std::size_t k, double sign) {
+    const double t = states[k].time - t0;
+    n += sign;
+    st += sign * t;
+    stt += sign * t * t;
+    for (std::size_t j = 0; j < joints; ++j)
+    {
+      sq[j] += sign * states[k].positions[j];
+      stq[j] += sign * t * states[k].positions[j];
+    }
+  };
+  std::size_t a = 0, b = 0;  // the window holds [a, b)
+  for (std::size_t k = 0; k < states.size(); ++k)
+  {
+    while (b < states.size() && states[b].time - states[k].time <= 0.5 * window)
+      add(b++, 1.0);
+    while (states[k].time - states[a].time > 0.5 * window)
+      add(a++, -1.0);
+    const double spread = n * stt - st * st;
+    if (n < 2.0 || !(spread > 1e-12 * n * n))
+      continue;
+    for (std::size_t j = 0; j < joints; ++j)
+      speed[k] = std::max(speed[k], std::abs((n * stq[j] - st * sq[j]) / spread));
+  }
+  return speed;
+}
+
+/// The arm's own noise at rest: the 90th percentile of the speeds below a quarter of `still` (0 with fewer than
+/// ten such samples).
+double restNoise(std::vector<double> speed, double still)
+{
+  speed.erase(std::remove_if(speed.begin(), speed.end(), [still](double v) { return v >= 0.25 * still; }),
+              speed.end());
+  if (speed.size() < 10)
+    return 0.0;
+  const auto at = speed.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(speed.size() - 1));
+  std::nth_element(speed.begin(), at, speed.end());
+  return *at;
+}
+
+/// The most any joint moves (max - min) over [from, to].
+double excursion(const RobotTrack& track, double from, double to)
+{
+  std::vector<double> low, high;
+  for (const RobotState& state : track.states)
+  {
+    if (state.time < from || state.time > to)
+      continue;
+    if (low.empty())
+      low = high = state.positions;
+    for (std::size_t j = 0; j < state.positions.size(); ++j)
+    {
+      low[j] = std::min(low[j], state.positions[j]);
+      high[j] = std::max(high[j], state.positions[j]);
+    }
+  }
+  double largest = 0.0;
+  for (std::size_t j = 0; j < low.size(); ++j)
+    largest = std::max(largest, high[j] - low[j]);
+  return largest;
+}
+
+/// The TCP's position at every recorded state, by the demonstration's own URDF; empty without one.
+std::vector<Eigen::Vector3d> tcpPath(const Demonstration& demo, const RobotTrack& track)
+{
+  std::vector<Eigen::Vector3d> path;
+  try
+  {
+    const TcpKinematics tcp(demo, track);
+    for (const RobotState& state : track.states)
+      path.push_back(tcp.at(state).translation());
+  }
+  catch (const DemoError&)
+  {
+    path.clear();
+  }
+  return path;
+}
+
+/// True when every TCP position of the states in [from, to] lies within `tolerance` of the straight line
+/// between the TCP at `from` and at `to`.
+bool straight(const RobotTrack& track, const std::vector<Eigen::Vector3d>& tcp, double from, double to,
+              double tolerance)
+{
+  std::size_t first = 0, last = 0;
+  for (std::size_t k = 0; k < track.states.size(); ++k)
+  {
+    if (track.states[k].time <= from)
+      first = k;
+    if (track.states[k].time <= to)
+      last = k;
+  }
+  const Eigen::Vector3d a = tcp[first], b = tcp[last];
+  const Eigen::Vector3d along = b - a;
+  const double length2 = along.squaredNorm();
+  for (std::size_t k = first; k <= last; ++k)
+  {
+    const double u = length2 > 0.0 ? std::clamp((tcp[k] - a).dot(along) / length2, 0.0, 1.0) : 0.0;
+    if ((tcp[k] - (a + u * along)).norm() > tolerance)
+      return false;
+  }
+  return true;
 }
 
 struct GripperAction
@@ -139,13 +251,29 @@ std::vector<GripperAction> gripperActions(const RobotTrack& track, const Segment
 }
 }  // namespace
 
+Segment findSegment(const Demonstration& demo, const RobotTrack& track, const std::string& name)
+{
+  const Segmentation segmentation = segmentPickPlace(track, demo);
+  std::string found;
+  for (const Segment& segment : segmentation.segments)
+  {
+    if (segment.name == name)
+      return segment;
+    found += (found.empty() ? "" : ", ") + segment.name;
+  }
+  throw DemoError(demo.source + ": robot '" + track.robot + "' has no segment '" + name + "' (found: " +
+                  (found.empty() ? "none" : found) + ")");
+}
+
 RobotState stateAt(const RobotTrack& track, double t)
 {
   const auto& states = track.states;
-  if (t <= states.front().time)
-    return states.front();
-  if (t >= states.back().time)
-    return states.back();
+  if (t <= states.front().time || t >= states.back().time)
+  {
+    RobotState out = t <= states.front().time ? states.front() : states.back();
+    out.time = t;  // the recorded state held: a slice from before the first state still starts at its start
+    return out;
+  }
   const auto after = std::upper_bound(states.begin(), states.end(), t,
                                       [](double time, const RobotState& s) { return time < s.time; });
   const RobotState& b = *after;
@@ -181,17 +309,17 @@ RobotTrack slice(const RobotTrack& track, double start, double end)
 
 std::vector<std::pair<double, double>> armMotions(const RobotTrack& track, const SegmentationOptions& options)
 {
-  std::vector<double> times, speed;
+  std::vector<double> times;
   for (const RobotState& state : track.states)
-  {
     times.push_back(state.time);
-    double fastest = 0.0;
-    for (double v : state.velocities)
-      fastest = std::max(fastest, std::abs(v));
-    speed.push_back(fastest);
-  }
-  return motions(times, [&](std::size_t k) { return speed[k]; }, options.still_speed, options.rest_speed,
-                 options.min_still);
+  const std::vector<double> speed = positionSpeeds(track, options.speed_window);
+  const double rest = std::max(options.rest_speed, 2.0 * restNoise(speed, options.still_speed));
+  std::vector<Interval> out;
+  for (const Interval& motion : motions(times, [&](std::size_t k) { return speed[k]; }, options.still_speed, rest,
+                                        options.min_still))
+    if (excursion(track, motion.first, motion.second) >= options.min_motion)
+      out.push_back(motion);
+  return out;
 }
 
 Segmentation segmentPickPlace(const RobotTrack& track, const Demonstration& demo, const SegmentationOptions& options)
@@ -221,9 +349,11 @@ Segmentation segmentPickPlace(const RobotTrack& track, const Demonstration& demo
   const double close_time = close ? close->start : track.states.back().time;
   const double open_time = open ? open->start : track.states.back().time;
 
-  // The arm motions between `from` and `to`, split in two at the rest next to the grasp: before it the
-  // motion into the grasp is `pick` (the ones before it `near_pick`), after it the motion out of the grasp is
-  // `back_to_near_pick` (the ones after it `final`). Stops at waypoints of the far instruction stay in it.
+  // The arm motions between `from` and `to`, split in two at the grasp's side: before it the motions on the
+  // straight way into the grasp are `pick` (the ones before them `near_pick`), after it the motions on the
+  // straight way out of it are `back_to_near_pick` (the ones after them `final`). Without the TCP the motion
+  // next to the grasp alone. Stops at waypoints of the far instruction stay in it.
+  const std::vector<Eigen::Vector3d> tcp = tcpPath(demo, track);
   auto armSegments = [&](double from, double to, const char* first, const char* second, bool before_grasp) {
     std::vector<Interval> inside;
     for (const Interval& motion : arm)
@@ -231,14 +361,21 @@ Segmentation segmentPickPlace(const RobotTrack& track, const Demonstration& demo
         inside.push_back({ std::max(motion.first, from), std::min(motion.second, to) });
     if (inside.empty())
       return;
-    if (inside.size() == 1)
+    std::size_t split = before_grasp ? inside.size() - 1 : 1;  // the first motion of `second`
+    if (!tcp.empty() && before_grasp)
+      while (split > 0 && straight(track, tcp, inside[split - 1].first, to, options.line_tolerance))
+        --split;
+    if (!tcp.empty() && !before_grasp)
+      while (split < inside.size() && straight(track, tcp, from, inside[split].second, options.line_tolerance))
+        ++split;
+    if (split == 0 || split == inside.size())  // one instruction: pick, or final (a single motion is final)
     {
       if (before_grasp)
-        out.warnings.push_back(std::string("no pause before '") + second + "': no '" + first + "' instruction");
-      out.segments.push_back({ second, inside.front().first, inside.front().second, false, 0.0, "" });
+        out.warnings.push_back(std::string("no motion before '") + second + "' off its way: no '" + first +
+                               "' instruction");
+      out.segments.push_back({ second, inside.front().first, inside.back().second, false, 0.0, "" });
       return;
     }
-    const std::size_t split = before_grasp ? inside.size() - 1 : 1;  // the first motion of `second`
     out.segments.push_back({ first, inside.front().first, inside[split - 1].second, false, 0.0, "" });
     out.segments.push_back({ second, inside[split].first, inside.back().second, false, 0.0, "" });
   };

@@ -4,6 +4,7 @@
 
 #include <vrrw_demos/segmentation.h>
 
+#include "hesitant_demo.h"
 #include "scripted_demo.h"
 
 using namespace vrrw_demos;
@@ -99,4 +100,25 @@ TEST(Segmentation, SliceKeepsTimesAndInterpolatesEnds)
   EXPECT_DOUBLE_EQ(part.states.front().time, 2.601);
   EXPECT_DOUBLE_EQ(part.states.back().time, 3.6);
   EXPECT_EQ(part.gripper_goals.size(), 0u);
+}
+
+TEST(Segmentation, AHesitantTeacherKeepsEachInstructionWhole)
+{
+  // pauses of 1-10 s inside and between instructions, a twitch and a ringing hold: the boundaries the
+  // teacher's moves had, within 50 ms
+  const auto scripted = vrrw_demos_test::hesitantPickPlace();
+  const Segmentation found = segmentPickPlace(scripted.demo.robots[0], scripted.demo);
+  expectBoundaries(scripted, found);
+  EXPECT_TRUE(found.warnings.empty());
+  EXPECT_EQ(found.segments[3].object, "box");
+}
+
+TEST(Segmentation, WithoutTheTcpThePickIsTheLastMotionBeforeTheGrasp)
+{
+  auto scripted = vrrw_demos_test::hesitantPickPlace();
+  scripted.demo.metadata.robot_description.clear();
+  const Segmentation found = segmentPickPlace(scripted.demo.robots[0], scripted.demo);
+  ASSERT_EQ(found.segments.size(), 6u);
+  EXPECT_NEAR(found.segments[1].start, 9.8, 0.05);  // only the second half of the descent
+  EXPECT_NEAR(found.segments[3].end, 14.1, 0.05);   // only the first half of the lift
 }

@@ -12,7 +12,7 @@
 #include <vrrw_trajectory/csv.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
-#include "bag_reader.h"
+#include "demo_source.h"
 
 namespace vrrw_dmp
 {
@@ -50,7 +50,7 @@ private:
     try
     {
       DmpProvenance provenance;
-      const auto demo = demonstration(request, provenance.source, response.message);
+      const auto demo = demonstration(request, provenance.source);
       const Dmp dmp = Dmp::learn(demo, parameters(request), provenance);
       if (!request.model_path.empty())
         saveDmp(dmp, request.model_path);
@@ -62,7 +62,7 @@ private:
       response.duration = dmp.demoDuration();
       response.samples = static_cast<int>(demo.points.size());
       response.message = "learned " + std::to_string(dmp.dofs()) + " joints from " + provenance.source + " (" +
-                         std::to_string(demo.points.size()) + " samples)" + response.message;
+                         std::to_string(demo.points.size()) + " samples)";
       dmp_ = dmp;
       ROS_INFO_STREAM("dmp_node: " << response.message);
     }
@@ -105,20 +105,16 @@ private:
     return true;
   }
 
-  vrrw_trajectory::JointTrajectory demonstration(const Learn::Request& request, std::string& source,
-                                                 std::string& note) const
+  vrrw_trajectory::JointTrajectory demonstration(const Learn::Request& request, std::string& source) const
   {
     const int sources = !request.bag_path.empty() + !request.csv_path.empty() + !request.trajectory.points.empty();
     if (sources != 1)
       throw DmpError("give exactly one of bag_path, csv_path or trajectory (got " + std::to_string(sources) + ")");
     if (!request.bag_path.empty())
     {
-      source = "bag:" + request.bag_path + "#" + request.topic;
-      std::size_t dropped = 0;
-      auto demo = readBag(request.bag_path, request.topic, request.joint_names, dropped);
-      if (dropped > 0)
-        note = ", dropped " + std::to_string(dropped) + " messages with repeated time stamps";
-      return demo;
+      DemoSource demo = bagSource(request.bag_path, request.robot, request.segment);
+      source = demo.source;
+      return std::move(demo.trajectory);
     }
     if (!request.csv_path.empty())
     {

@@ -15,6 +15,7 @@
 #include <vrrw_dmp/dmp_yaml.h>
 #include <vrrw_trajectory/csv.h>
 
+#include "demo_source.h"
 
 namespace
 {
@@ -22,8 +23,8 @@ using vrrw_common::OptionError;
 using vrrw_common::Options;
 
 const char* const kUsage =
-    "usage: vrrw_dmp learn --demo FILE.csv --out MODEL.yaml [--basis N] [--alpha A] [--K K] [--D D]\n"
-    "                      [--scaling goal|amplitude|auto]\n"
+    "usage: vrrw_dmp learn --demo FILE.csv|FILE.bag --out MODEL.yaml [--robot R] [--segment NAME] [--basis N]\n"
+    "                      [--alpha A] [--K K] [--D D] [--scaling goal|amplitude|auto]\n"
     "       vrrw_dmp rollout --model MODEL.yaml --out FILE.csv [--start q1,..] [--goal q1,..] [--tau T] [--dt DT]\n"
     "       vrrw_dmp plot --demo FILE.csv --rollout FILE.csv [--rollout FILE2.csv ..] --out FILE.png [--title T]\n"
     "CSV: header 't,<joint>..,<joint>_vel..', rows t, q1..qn, qd1..qdn. Values starting with '-' work as\n"
@@ -53,11 +54,68 @@ double reproductionRmse(const vrrw_dmp::Dmp& dmp, const vrrw_trajectory::JointTr
   return worst;
 }
 
+/// rad: a reproduction error above this gets advice (a segment, a basis count).
+constexpr double kGoodFit = 0.01;
+
+vrrw_dmp::DemoSource loadSource(const Options& options)
+{
+  const std::string path = options.text("demo");
+  if (path.size() > 4 && path.compare(path.size() - 4, 4, ".bag") == 0)
+    return vrrw_dmp::bagSource(path, options.text("robot", ""), options.text("segment", ""));
+  if (options.has("robot") || options.has("segment"))
+    throw OptionError("--robot and --segment need a recorded bag as --demo (FILE.bag), not " + path);
+  return vrrw_dmp::csvSource(path);
+}
+
+std::string number(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.3g", value);
+  return text;
+}
+
+/// What would reproduce a demonstration better than \a rmse: one motion at a time, or more basis functions.
+std::vector<std::string> fitAdvice(const vrrw_dmp::DemoSource& demo, const vrrw_dmp::DmpParameters& parameters,
+                                   double rmse)
+{
+  std::vector<std::string> advice;
+  if (rmse <= kGoodFit)
+    return advice;
+  if (demo.motions.size() > 1)
+  {
+    std::string starts;
+    for (const auto& motion : demo.motions)
+      starts += (starts.empty() ? "" : ", ") + number(motion.first);
+    std::string how = "cut it at the rests";
+    if (demo.from_bag && !demo.segments.empty())
+    {
+      how = "learn one instruction at a time with --segment NAME (this bag has";
+      for (const auto& name : demo.segments)
+        how += " " + name;
+      how += ")";
+    }
+    advice.push_back("the demonstration holds " + std::to_string(demo.motions.size()) +
+                     " motions with rests between them (starting at " + starts + " s); a DMP is one motion: " + how);
+  }
+  for (std::size_t count = 2 * parameters.basis_count; count <= 1000; count *= 2)
+  {
+    vrrw_dmp::DmpParameters more = parameters;
+    more.basis_count = count;
+    const double fit = reproductionRmse(vrrw_dmp::Dmp::learn(demo.trajectory, more), demo.trajectory);
+    if (fit <= kGoodFit)
+    {
+      advice.push_back("--basis " + std::to_string(count) + " reproduces it within " + number(fit) + " rad");
+      return advice;
+    }
+  }
+  advice.push_back("no basis count up to 1000 reproduces it within " + number(kGoodFit) + " rad");
+  return advice;
+}
+
 int learn(int argc, char** argv)
 {
-  const Options options(argc, argv, 2, { "demo", "out", "basis", "alpha", "K", "D", "scaling" });
+  const Options options(argc, argv, 2, { "demo", "out", "robot", "segment", "basis", "alpha", "K", "D", "scaling" });
   options.expectPositional({});
-  const std::string demo_path = options.text("demo");
   const std::string out = options.text("out");
   vrrw_dmp::DmpParameters parameters;
   parameters.basis_count = options.count("basis", parameters.basis_count, 0, 1000000000);
@@ -68,16 +126,19 @@ int learn(int argc, char** argv)
   parameters.scaling = vrrw_dmp::amplitudeScalingFromString(options.text("scaling", "goal"));
   parameters.validate();
 
-  const auto demo = vrrw_trajectory::readCsv(demo_path);
+  const vrrw_dmp::DemoSource demo = loadSource(options);
   vrrw_dmp::DmpProvenance provenance;
-  provenance.source = demo_path;
-  const auto dmp = vrrw_dmp::Dmp::learn(demo, parameters, provenance);
+  provenance.source = demo.source;
+  const auto dmp = vrrw_dmp::Dmp::learn(demo.trajectory, parameters, provenance);
   for (const auto& warning : dmp.warnings())
     std::cerr << "vrrw dmp: warning: " << warning << "\n";
   vrrw_dmp::saveDmp(dmp, out);
-  std::cout << "learned " << dmp.dofs() << " joints from " << demo_path << " (" << demo.points.size()
-            << " samples, " << dmp.demoDuration() << " s), N = " << parameters.basis_count
-            << ", reproduction RMSE " << reproductionRmse(dmp, demo) << " rad -> " << out << "\n";
+  const double rmse = reproductionRmse(dmp, demo.trajectory);
+  std::cout << "learned " << dmp.dofs() << " joints from " << demo.source << " (" << demo.trajectory.points.size()
+            << " samples, " << dmp.demoDuration() << " s), N = " << parameters.basis_count << ", reproduction RMSE "
+            << number(rmse) << " rad -> " << out << "\n";
+  for (const auto& line : fitAdvice(demo, parameters, rmse))
+    std::cout << "advice: " << line << "\n";
   return 0;
 }
 

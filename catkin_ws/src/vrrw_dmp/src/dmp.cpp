@@ -5,6 +5,7 @@
 
 #include <vrrw_dmp/dmp_error.h>
 
+#include "forcing_regression.h"
 #include "format_number.h"
 
 namespace vrrw_dmp
@@ -137,7 +138,7 @@ void Dmp::forcingAt(double s, double* psi, double* forcing) const
   double sum = 0.0;
   for (std::size_t i = first; i < last; ++i)
     sum += psi[i];
-  const double factor = s / sum;
+  const double factor = s / sum * tailFade(s, parameters_.alpha);
   for (std::size_t j = 0; j < weights_.size(); ++j)
   {
     const double* w = weights_[j].data();
@@ -194,7 +195,7 @@ std::size_t Dmp::nominalSteps(const RolloutRequest& request, double tau) const
     throw DmpError("dt = " + format(request.dt) + ": must be a finite number > 0");
   if (request.tau < 0.0 || !std::isfinite(request.tau))
     throw DmpError("tau = " + format(request.tau) + ": must be a finite number > 0");
-  if (!(request.goal_tolerance > 0.0) || !(request.rest_tolerance > 0.0))
+  if (!(request.goal_tolerance > 0.0) || !(request.rest_speed > 0.0))
     throw DmpError("rollout tolerances must be > 0");
   if (request.dt > tau)
     throw DmpError("dt = " + format(request.dt) + " is longer than tau = " + format(tau));
@@ -229,7 +230,7 @@ vrrw_trajectory::JointTrajectory Dmp::rollout(const RolloutRequest& request) con
       bool settled = true;
       for (std::size_t j = 0; j < dofs() && settled; ++j)
         settled = std::abs(state.goal[j] - state.positions[j]) <= request.goal_tolerance &&
-                  std::abs(state.scaled_velocity[j]) <= request.rest_tolerance;
+                  std::abs(state.velocities[j]) <= request.rest_speed;
       if (settled)
         break;
     }

@@ -4,14 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <ctime>
 
 #include <vrrw_dmp/dmp_error.h>
 #include <vrrw_dmp/local_polynomial_derivative.h>
 
+#include "forcing_regression.h"
 #include "format_number.h"
 
 namespace vrrw_dmp
@@ -135,11 +132,8 @@ JointScaling chooseScaling(const DemoKinematics& kinematics, const std::vector<s
   {
     const double amplitude = demonstratedRange(kinematics, j);
     const double offset = goal[j] - start[j];
-    const bool degenerate = amplitude > 0.0 && std::abs(offset) <= parameters.degenerate_ratio * amplitude;
-    AmplitudeScaling scaling = parameters.scaling;
-    if (scaling == AmplitudeScaling::automatic)
-      scaling = degenerate || amplitude < parameters.still_range ? AmplitudeScaling::demo_amplitude
-                                                                 : AmplitudeScaling::goal_offset;
+    bool degenerate = false;
+    const AmplitudeScaling scaling = scalingFor(offset, amplitude, parameters, degenerate);
     if (degenerate)
       result.warnings.push_back(degenerateWarning(names[j], offset, amplitude, parameters.degenerate_ratio, scaling));
     result.amplitude[j] = amplitude;
@@ -152,84 +146,38 @@ JointScaling chooseScaling(const DemoKinematics& kinematics, const std::vector<s
   return result;
 }
 
-/// Locally weighted regression of the target forcing term on each basis function, over the samples
-/// weighted by their share of the duration (trapezoid), so dense parts of a recording do not dominate:
-///   w_i = sum_k dt_k psi_i(s_k) s_k f_k / sum_k dt_k psi_i(s_k) s_k^2.
+/// The transformation system solved for f with tau = the demonstration's duration, per sample and joint,
+/// divided by the joint's scale (sample-major), then regressed on the basis (regressForcing).
 std::vector<std::vector<double>> regressWeights(const DemoKinematics& kinematics, const std::vector<double>& goal,
                                                 const std::vector<double>& scale, const GaussianBasis& basis,
                                                 const DmpParameters& parameters)
 {
   const std::size_t n = kinematics.joints;
-  const std::size_t samples = kinematics.samples;
-  const std::size_t count = basis.size();
-  const std::vector<double>& times = kinematics.times;
   const double duration = kinematics.duration;
   const double K = parameters.K;
   const double D = parameters.damping();
-  std::vector<double> numerator(n * count, 0.0);
-  std::vector<double> denominator(count, 0.0);
-  std::vector<double> psi(count);
-  std::vector<double> target(n);
-  for (std::size_t k = 0; k < samples; ++k)
-  {
-    const double s = std::exp(-parameters.alpha * times[k] / duration);
-    const double quadrature = 0.5 * (times[std::min(k + 1, samples - 1)] - times[k > 0 ? k - 1 : 0]);
+  std::vector<double> targets(kinematics.samples * n);
+  for (std::size_t k = 0; k < kinematics.samples; ++k)
     for (std::size_t j = 0; j < n; ++j)
     {
-      // the transformation system solved for f with tau = the demonstration's duration
       const std::size_t at = k * n + j;
       const double force = duration * duration * kinematics.ydd[at] - K * (goal[j] - kinematics.y[at]) +
                            D * duration * kinematics.yd[at];
-      target[j] = scale[j] != 0.0 ? force / scale[j] : 0.0;
+      targets[at] = scale[j] != 0.0 ? force / scale[j] : 0.0;
     }
-    std::size_t first = 0;
-    std::size_t last = 0;
-    const double peak = std::exp(basis.evaluate(s, psi.data(), first, last));
-    for (std::size_t i = first; i < last; ++i)
-    {
-      const double weight = quadrature * peak * psi[i] * s;
-      denominator[i] += weight * s;
-      double* row = numerator.data() + i * n;
-      for (std::size_t j = 0; j < n; ++j)
-        row[j] += weight * target[j];
-    }
-  }
-  std::vector<std::vector<double>> weights(n, std::vector<double>(count, 0.0));
-  for (std::size_t i = 0; i < count; ++i)
-    if (denominator[i] > 0.0)
-      for (std::size_t j = 0; j < n; ++j)
-        weights[j][i] = numerator[i * n + j] / denominator[i];
-  return weights;
-}
-
-std::string utcNow()
-{
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char buffer[32];
-  std::strftime(buffer, sizeof(buffer), "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return buffer;
+  return regressForcing(kinematics.times, n, targets, basis, parameters.alpha);
 }
 
 /// FNV-1a over the 64-bit patterns of the demonstration's times and positions.
 std::string checksum(const vrrw_trajectory::JointTrajectory& demo)
 {
-  std::uint64_t hash = 1469598103934665603ull;
-  auto mix = [&hash](double value) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &value, sizeof(bits));
-    hash = (hash ^ bits) * 1099511628211ull;
-  };
+  std::vector<double> values;
   for (const auto& point : demo.points)
   {
-    mix(point.time);
-    for (double q : point.positions)
-      mix(q);
+    values.push_back(point.time);
+    values.insert(values.end(), point.positions.begin(), point.positions.end());
   }
-  char buffer[20];
-  std::snprintf(buffer, sizeof(buffer), "%016llx", static_cast<unsigned long long>(hash));
-  return buffer;
+  return checksumOf(values);
 }
 
 DmpProvenance stamped(DmpProvenance provenance, const vrrw_trajectory::JointTrajectory& demo)
@@ -248,7 +196,7 @@ Dmp Dmp::learn(const vrrw_trajectory::JointTrajectory& demo, const DmpParameters
   parameters.validate();
   checkDemo(demo);
   std::vector<double> times = demoTimes(demo);
-  const LocalPolynomialDerivative fit(times, parameters.derivative_half_window);
+  const LocalPolynomialDerivative fit(times, derivativeHalfWindow(parameters, times.size()));
   const DemoKinematics kinematics = differentiate(demo, std::move(times), fit);
   const std::size_t n = kinematics.joints;
   std::vector<double> start(kinematics.y.begin(), kinematics.y.begin() + n);

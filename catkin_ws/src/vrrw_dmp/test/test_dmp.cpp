@@ -91,11 +91,28 @@ TEST(Dmp, ConvergesToNewStartAndGoal)
   EXPECT_EQ(rollout.points.front().positions, request.start);
   for (std::size_t j = 0; j < 6; ++j)
   {
-    EXPECT_NEAR(rollout.points.back().positions[j], request.goal[j], 1e-3);
-    EXPECT_NEAR(rollout.points.back().velocities[j], 0.0, 1e-3);
+    EXPECT_NEAR(rollout.points.back().positions[j], request.goal[j], request.goal_tolerance);
+    EXPECT_NEAR(rollout.points.back().velocities[j], 0.0, request.rest_speed);
   }
   EXPECT_GE(rollout.duration(), demo.T);
   EXPECT_LE(rollout.duration(), 4 * demo.T);
+}
+
+TEST(Dmp, ASlowDemonstrationEndsSoonAfterTau)
+{
+  // a person's 23 s segment: with a 1e-4 rad goal tolerance its rollout crept on to 64 s (here 2.6 tau before)
+  SmoothDemo demo;
+  demo.T = 23.0;
+  const Dmp dmp = Dmp::learn(sample(demo, 1400, 0.3, 2e-5), DmpParameters{});
+  RolloutRequest request = fineRollout(0.01);
+  request.goal = dmp.demoGoal();
+  for (double& q : request.goal)
+    q += 0.1;
+  const auto rollout = dmp.rollout(request);
+  RecordProperty("duration_s", std::to_string(rollout.duration()));
+  EXPECT_LE(rollout.duration(), 1.1 * demo.T);
+  for (std::size_t j = 0; j < 6; ++j)
+    EXPECT_NEAR(rollout.points.back().positions[j], request.goal[j], request.goal_tolerance);
 }
 
 TEST(Dmp, NewGoalScalesThePathAffinely)

@@ -21,7 +21,9 @@
 #include <vrrw_evaluation/pick_place_task.h>
 #include <vrrw_kinematics/robot_model.h>
 
-#include "../src/ros/bag_instructions.h"
+#include <vrrw_demos/ros/demo_bag.h>
+#include <vrrw_evaluation/annotations.h>
+#include <vrrw_evaluation/joint_paths.h>
 
 using namespace vrrw_evaluation;
 
@@ -67,10 +69,21 @@ int run(const std::string& scene, const std::string& bag, const std::string& out
   if (!findCell(scene, cell, error))
     return std::cerr << "demo: relay: " << error << "\n", 2;
   const std::vector<std::string>& joints = cell.robot.arm_joints;
-  const std::vector<Segment> instructions = bagInstructions(bag, 0.0);  // both in the bag's absolute stamps
-  const BagTrack track = bagTrack(bag, cell.robot.name, joints, 0.0);
-  if (instructions.size() != kInstructions.size() || track.gripper_goals.size() < 2)
-    return std::cerr << "demo: relay: " << bag << ": not the six instructions and two gripper goals of a demonstration\n", 1;
+  std::vector<Segment> instructions;
+  vrrw_demos::RobotTrack track;
+  try
+  {
+    const vrrw_demos::Demonstration shown = vrrw_demos::readDemonstration(bag, { cell.robot.name });
+    instructions = annotatedInstructions(shown);
+    track = shown.robots.front();
+  }
+  catch (const std::exception& e)
+  {
+    return std::cerr << "demo: relay: " << e.what() << "\n", 1;
+  }
+  if (instructions.size() != kInstructions.size() || track.gripper_goals.size() < 2 || track.joint_names != joints)
+    return std::cerr << "demo: relay: " << bag << ": not the six instructions and two gripper goals of a demonstration"
+                     << " of " << cell.robot.name << "\n", 1;
 
   ros::NodeHandle node;
   ros::AsyncSpinner spinner(2);
@@ -103,7 +116,7 @@ int run(const std::string& scene, const std::string& bag, const std::string& out
     return Relayed{ name, "arm", outcome, motion.points.size(), motion.duration() };
   };
   std::vector<Relayed> relayed{ arm("to_the_recorded_start",
-                                    vrrw_demos::approachMove(joints, from, positionsAt(track.arm, instructions.front().start),
+                                    vrrw_demos::approachMove(joints, from, vrrw_demos::stateAt(track, instructions.front().start).positions,
                                                              max_velocity)) };
   progress(relayed.back().name + ": " + relayed.back().outcome.text() + " (arm)");
   std::size_t gripper_goal = 0;
@@ -113,13 +126,13 @@ int run(const std::string& scene, const std::string& bag, const std::string& out
       break;
     if (isGripperInstruction(instruction.name))
     {
-      const auto& [position, effort] = track.gripper_goals[std::min(gripper_goal++, track.gripper_goals.size() - 1)];
-      relayed.push_back({ instruction.name, "gripper (simulated only)", controllers.runGripper(position, effort, 10.0), 1, 0.0 });
+      const vrrw_demos::GripperGoal& goal = track.gripper_goals[std::min(gripper_goal++, track.gripper_goals.size() - 1)];
+      relayed.push_back({ instruction.name, "gripper (simulated only)",
+                          controllers.runGripper(goal.position, goal.max_effort, 10.0), 1, 0.0 });
     }
     else
     {
-      vrrw_trajectory::JointTrajectory motion = slice(track.arm, instruction.start, instruction.end);
-      addVelocities(motion);
+      const vrrw_trajectory::JointTrajectory motion = instructionGoal(track, instruction.start, instruction.end);
       // the driver's joint_states may trail its result, and the gate checks a goal's start against them
       controllers.waitUntilAt(joints, motion.points.front().positions, 0.005, 2.0);
       relayed.push_back(arm(instruction.name, motion));

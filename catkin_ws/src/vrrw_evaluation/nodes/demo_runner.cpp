@@ -74,8 +74,7 @@ int main(int argc, char** argv)
   if (!hand.waitUntilReady(10.0, error))
     return spinner.stop(), std::cerr << "demo: " << error << ": the teach stage needs free-drive\n", 1;
   options.table = cell.table;
-  PickPlaceDemo demo(client, ghost, hand, options);
-  Demonstration demonstration;
+  PickPlaceDemo demo(node, client, ghost, hand, cell, options);
   auto stage = [&](const char* name, const std::function<bool()>& run) {
     std::printf("demo: %s ...\n", name);
     std::fflush(stdout);
@@ -85,20 +84,20 @@ int main(int argc, char** argv)
     std::printf("demo: %s %s in %.1f s\n", name, ok ? "done" : "FAILED", report.stage_seconds[name]);
     return ok;
   };
-  bool ok = stage("1 teach", [&] { return demo.teach(demonstration, report, error); });
+  bool ok = stage("1 teach", [&] { return demo.teach(report, error); });
   if (ok)
     ok = stage("2 segment", [&] {
-      if (!demo.segment(demonstration, report, error))
+      if (!demo.segment(report, error))
         return false;
-      for (const Segment& s : demonstration.segments)
+      for (const Segment& s : report.segments)
         std::printf("demo:   %-18s %7.3f .. %7.3f s\n", s.name.c_str(), s.start, s.end);
       return true;
     });
   if (ok)
-    ok = stage("3 replay", [&] { return demo.replay(demonstration, report, error); });
+    ok = stage("3 replay", [&] { return demo.replay(report, error); });
   if (ok)
     ok = stage("4 generalize", [&] {
-      demo.generalize(demonstration, report);
+      demo.generalize(report);
       return true;
     });
   report.physics_rtf = client.realTimeFactor();
@@ -114,8 +113,10 @@ int main(int argc, char** argv)
   {
     return std::cerr << "demo: " << e.what() << "\n", 1;
   }
-  std::printf("demo: replay joint RMS %.2e rad, drill %.1f mm / %.2f deg; DMP %d of %d trials succeeded\n",
+  std::printf("demo: replay joint RMS %.2e rad, drill %.1f mm / %.2f deg; skill %d of %d trials succeeded, grasp "
+              "%.2f mm / %.2f deg from the script's\n",
               report.replay_joint_rms_rad, report.replay_object_position_error_m * 1000,
-              report.replay_object_angle_error_deg, report.successCount(), report.trialCount());
+              report.replay_object_angle_error_deg, report.successCount(), report.trialCount(),
+              report.skill.grasp_error_mm, report.skill.grasp_error_deg);
   return ok ? 0 : 1;
 }

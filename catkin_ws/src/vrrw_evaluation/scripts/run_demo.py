@@ -1,14 +1,18 @@
 #!/usr/bin/env python3
 """./vrrw demo: the paper's evaluation end to end, headless, with its own master under Xvfb.
 
-  run_demo.py --launch WORKSPACE.launch --scene S [--trials N] [--seed S] [--out DIR] [--quick] [--real NS [--yes]]
+  run_demo.py --launch WORKSPACE.launch --scene S [--trials N] [--seed S] [--out DIR] [--quick] [--arms A,B]
+              [--real NS [--yes]]
 
 Brings the workspace up in physics mode with rviz on a private display, runs demo_runner (teach,
-segment, replay, generalize; it saves rviz frames at the instruction boundaries), then draws the
-plots and frame strips beside the runner's metrics.json, report.md and index.html. With --real NS, stage 5
+segment, replay, generalize: the skill learned from the bag and its trials; it saves rviz frames at the
+instruction boundaries), then draws the plots and frame strips beside the runner's metrics.json, report.md and
+index.html. With --arms, the same trials of the same skill on each of those arms at the taught arm's base
+(`./vrrw skill evaluate` on a copy of the scene), side by side in the report. With --real NS, stage 5
 relays the demonstration to the real robot whose driver runs under NS on $ROS_MASTER_URI (demo_relay).
 """
 import argparse
+import json
 import os
 import re
 import shutil
@@ -83,6 +87,65 @@ def relay(args, robot, master_uri, out):
         stop([controller])
 
 
+def arm_scene(scene, robot, arm, folder):
+    """A copy of the scene with `arm` (a model of urdf/models.yaml) where the taught robot stands, named after
+    the model: the skill's Cartesian keyframes and paths carry over, IK is the new arm's."""
+    import yaml
+    path = scene if os.path.isfile(scene) else os.path.join(ROOT, 'urdf', 'scenes', scene + '.yaml')
+    with open(path) as f:
+        cell = yaml.safe_load(f)
+    for entry in cell['robots']:
+        if entry['name'] == robot:
+            entry['name'], entry['model'] = arm, arm
+    cell['name'] = f"{cell.get('name', 'cell')}_{arm}"
+    os.makedirs(folder, exist_ok=True)
+    copy = os.path.join(folder, 'scene.yaml')
+    with open(copy, 'w') as f:
+        yaml.safe_dump(cell, f, sort_keys=False)
+    return copy
+
+
+def other_arms(args, robot, trials, out):
+    """--arms: `skill evaluate` of the demo's skill on each arm; its figures into metrics.json and index.html."""
+    results = {}
+    for arm in [a for a in args.arms.split(',') if a]:
+        folder = os.path.join(out, 'arms', arm)
+        scene = arm_scene(args.scene, robot, arm, folder)
+        log(f'arms: {arm} at the {robot}\'s base, {trials} trials (skill evaluate, log in {folder})')
+        result = subprocess.run([os.path.join(ROOT, 'vrrw'), 'skill', 'evaluate', os.path.join(out, 'skill.yaml'),
+                                 '--scene', scene, '--robot', arm, '--trials', str(trials), '--seed', str(args.seed),
+                                 '--out', folder], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        with open(os.path.join(folder, 'evaluate.log'), 'w') as f:
+            f.write(result.stdout)
+        try:
+            with open(os.path.join(folder, 'metrics.json')) as f:
+                metrics = json.load(f)
+        except (OSError, ValueError):
+            log(f'arms: {arm}: skill evaluate failed (exit {result.returncode}; see {folder}/evaluate.log)')
+            continue
+        results[arm] = {key: metrics[key] for key in ('success_rate', 'reachable_rate', 'mean_cycle_seconds',
+                                                      'mean_planning_ms', 'failures', 'trials')}
+        log(f"arms: {arm}: {metrics['successes']} of {metrics['trials']} succeeded")
+    with open(os.path.join(out, 'metrics.json')) as f:
+        report = json.load(f)
+    dmp = report['dmp']
+    cycles = [t['cycle_seconds'] for t in dmp['trial_results'] if t['success']]
+    results = {robot: {'success_rate': dmp['success_rate'], 'mean_cycle_seconds': sum(cycles) / max(len(cycles), 1),
+                       'failures': dmp['failures'], 'trials': dmp['trials'], 'taught': True}, **results}
+    report['arms'] = results
+    with open(os.path.join(out, 'metrics.json'), 'w') as f:
+        json.dump(report, f, indent=1)
+    rows = ''.join(f"<tr><td>{arm}</td><td>{100 * r['success_rate']:.0f} % of {r['trials']}</td>"
+                   f"<td>{r['mean_cycle_seconds']:.1f} s</td><td>{'; '.join(x['reason'] for x in r['failures'])}</td></tr>\n"
+                   for arm, r in results.items())
+    table = ('<h2>The skill on other arms at the same base</h2>\n<table>\n<tr><th>arm</th><th>success</th>'
+             f'<th>mean cycle</th><th>why trials failed</th></tr>\n{rows}</table>\n')
+    with open(os.path.join(out, 'index.html')) as f:
+        html = f.read()
+    with open(os.path.join(out, 'index.html'), 'w') as f:
+        f.write(html.replace('</body>', table + '</body>'))
+
+
 def stop(processes):
     for process in reversed(processes):
         try:
@@ -131,6 +194,7 @@ def parse_args(argv):
     parser.add_argument('--seed', type=int, default=1)
     parser.add_argument('--out', default='demo_report')
     parser.add_argument('--quick', action='store_true', help='3 trials unless --trials says otherwise')
+    parser.add_argument('--arms', default='', help='models to try the skill on at the taught arm\'s base, e.g. ur10e,ur3e')
     parser.add_argument('--real', metavar='NS', help="relay to the real robot whose driver runs under NS")
     parser.add_argument('--yes', action='store_true', help='--real without asking')
     args = parser.parse_args(argv)
@@ -207,8 +271,10 @@ def main():
         for line in workspace_trouble(launch_log):
             print(f'demo: workspace.log: {line}', file=sys.stderr)
         sys.exit(result.returncode)
+    robot = re.search(r'robot (\S+) picks', checked.stdout).group(1)
+    if args.arms:
+        other_arms(args, robot, trials, out)
     if args.real is not None:
-        robot = re.search(r'robot (\S+) picks', checked.stdout).group(1)
         sys.exit(relay(args, robot, robot_master, out))
 
 

@@ -53,16 +53,22 @@ std::vector<std::pair<std::string, std::string>> metricRows(const DemoReport& r)
     rows.push_back({ "replay joint error, " + name, number(rms, 3) + " rad" });
   rows.push_back({ "replay drill position error", number(r.replay_object_position_error_m * 1000, 3) + " mm" });
   rows.push_back({ "replay drill angle error", number(r.replay_object_angle_error_deg, 3) + " deg" });
+  rows.push_back({ "skill learned from the bag", r.skill.file + " in " + number(r.skill.learn_seconds, 3) + " s" });
+  rows.push_back({ "learned grasp vs the script's", number(r.skill.grasp_error_mm, 3) + " mm, " +
+                                                      number(r.skill.grasp_error_deg, 3) + " deg" });
   for (const auto& [name, rmse] : r.dmp_fit_rmse_rad)
-    rows.push_back({ "DMP fit RMSE, " + name, number(rmse, 3) + " rad" });
+    rows.push_back({ "DMP fit RMSE, " + name, number(rmse, 3) + " rad (joints), " +
+                                                  number(r.skill.cartesian_fit_rmse_m.count(name) ?
+                                                             1000 * r.skill.cartesian_fit_rmse_m.at(name) : 0.0, 3) +
+                                                  " mm (TCP)" });
   rows.push_back({ "DMP success rate", number(100 * r.successRate(), 4) + " % (" + std::to_string(r.successCount()) +
                                            " of " + std::to_string(r.trialCount()) + ")" });
   rows.push_back({ "planning time (teach)", number(r.plan_ms, 4) + " ms" });
   double ik = 0.0;
   for (const TrialRecord& t : r.trials)
     ik += t.ik_ms;
-  rows.push_back({ "IK time per trial (goal transfer)", number(r.trials.empty() ? 0.0 : ik / double(r.trials.size()), 4) +
-                                                           " ms" });
+  rows.push_back({ "planning time per trial (IK, rollouts, checks)",
+                   number(r.trials.empty() ? 0.0 : ik / double(r.trials.size()), 4) + " ms" });
   rows.push_back({ "physics real-time factor", number(r.physics_rtf, 4) });
   for (const auto& [stage, seconds] : r.stage_seconds)
     rows.push_back({ "wall time, " + stage, number(seconds, 4) + " s" });
@@ -136,7 +142,14 @@ std::string metricsJson(const DemoReport& r)
     j << sep << "{\"name\": " << jsonString(s.name) << ", \"start\": " << number(s.start) << ", \"end\": " << number(s.end)
       << "}",
         sep = ", ";
-  j << "],\n  \"replay\": {\"joint_rms_rad\": " << number(r.replay_joint_rms_rad)
+  j << "],\n  \"skill\": {\"file\": " << jsonString(r.skill.file) << ", \"learn_seconds\": " << number(r.skill.learn_seconds)
+    << ", \"grasp_learned_m\": [" << number(r.skill.grasp_learned[0]) << ", " << number(r.skill.grasp_learned[1]) << ", "
+    << number(r.skill.grasp_learned[2]) << "], \"grasp_taught_m\": [" << number(r.skill.grasp_taught[0]) << ", "
+    << number(r.skill.grasp_taught[1]) << ", " << number(r.skill.grasp_taught[2]) << "], \"grasp_error_mm\": "
+    << number(r.skill.grasp_error_mm) << ", \"grasp_error_deg\": " << number(r.skill.grasp_error_deg)
+    << ", \"cartesian_fit_rmse_m\": " << numberMap(r.skill.cartesian_fit_rmse_m)
+    << ", \"cartesian_fit_rmse_deg\": " << numberMap(r.skill.cartesian_fit_rmse_deg) << "},\n";
+  j << "  \"replay\": {\"joint_rms_rad\": " << number(r.replay_joint_rms_rad)
     << ", \"segment_joint_rms_rad\": " << numberMap(r.replay_segment_rms_rad)
     << ", \"object_position_error_m\": " << number(r.replay_object_position_error_m)
     << ", \"object_angle_error_deg\": " << number(r.replay_object_angle_error_deg) << "},\n";
@@ -154,6 +167,7 @@ std::string metricsJson(const DemoReport& r)
       << ", \"yaw_deg\": " << number(t.yaw_deg) << ", \"executed\": " << (t.executed ? "true" : "false")
       << ", \"success\": " << (t.success ? "true" : "false") << ", \"final_error_m\": " << number(t.final_error_m)
       << ", \"final_angle_deg\": " << number(t.final_angle_deg) << ", \"ik_ms\": " << number(t.ik_ms)
+      << ", \"cycle_seconds\": " << number(t.cycle_seconds)
       << ", \"reason\": " << jsonString(t.reason) << "}",
         sep = ",";
   j << "]},\n  \"physics\": {\"rtf\": " << number(r.physics_rtf) << "},\n";

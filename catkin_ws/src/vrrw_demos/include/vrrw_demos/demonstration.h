@@ -20,6 +20,7 @@ struct GripperGoal
 {
   double time = 0.0;
   double position = 0.0;
+  double max_effort = 0.0;  ///< N; 0: none given
 };
 
 /// \brief Something that happened (vrrw_msgs/Event): grab, release, annotate, ...
@@ -54,9 +55,25 @@ struct RobotTrack
   std::vector<GripperGoal> gripper_goals;
 };
 
+/// \brief What the recorder wrote on /demos/metadata (missing fields empty).
+struct BagMetadata
+{
+  struct Robot
+  {
+    std::vector<std::string> arm_joints, gripper_joints;
+    std::string base_link, tcp_link, config_file;
+  };
+  double start_stamp = 0.0;
+  std::string scene, scene_file, scene_yaml, robot_description, vrrw_version, seed;
+  std::vector<std::string> objects;
+  std::map<std::string, Robot> robots;
+};
+
 /// \brief A demonstration as read from a bag: the robots' tracks, events and objects' poses.
 struct Demonstration
 {
+  std::string source;        ///< the bag it was read from
+  BagMetadata metadata;      ///< what the recorder wrote about the cell (empty fields: not recorded)
   double start_stamp = 0.0;  ///< absolute time (s) of time 0
   std::vector<RobotTrack> robots;
   std::vector<DemoEvent> events;
@@ -71,4 +88,8 @@ struct Demonstration
     return nullptr;
   }
 };
+
+/// \brief The last recorded pose of \a object at or before time t (the first one before it is recorded);
+/// nullptr when the object has no recorded pose.
+const Pose* objectPoseAt(const Demonstration& demo, const std::string& object, double t);
 }  // namespace vrrw_demos

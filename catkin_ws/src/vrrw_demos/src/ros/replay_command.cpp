@@ -27,8 +27,8 @@
 #include <vrrw_kinematics/robot_model.h>
 #include <vrrw_scene/robot_config.h>
 
-#include "../../nodes/bag_demo.h"
-#include "../../nodes/segment_report.h"
+#include <vrrw_demos/ros/demo_bag.h>
+#include "segment_report.h"
 
 namespace vrrw_demos
 {
@@ -88,7 +88,7 @@ ReplayInput loadInput(const ReplayRequest& request)
   input.instructions = segmentPickPlace(demo.robots.front(), demo).segments;
   if (!request.segment.empty())
   {
-    const Segment segment = findSegment(request.bag, demo, input.track, request.segment);
+    const Segment segment = findSegment(demo, input.track, request.segment);
     input.track = slice(input.track, segment.start, segment.end);
     input.gripper_only = segment.gripper;
     input.gripper_target = segment.gripper_target;

@@ -48,8 +48,8 @@ struct RolloutRequest
   std::vector<double> goal;
   double tau = 0.0;  ///< seconds; the demonstration has tau = its duration
   double dt = 0.01;  ///< output sample period, seconds
-  double goal_tolerance = 1e-4;  ///< rad; the rollout ends when every joint is this close to its goal ...
-  double rest_tolerance = 1e-3;  ///< ... and every |v| = |tau dx/dt| is below this (rad)
+  double goal_tolerance = 1e-3;  ///< rad; after tau the rollout ends once every joint is this close to its goal
+  double rest_speed = 5e-3;      ///< rad/s ... and every |dx/dt| is below this
 };
 
 /// \brief A multi-DoF Dynamic Movement Primitive, equations 2-4 of the VRRW paper (after Ijspeert et
@@ -70,6 +70,10 @@ struct RolloutRequest
 /// equals its new start, and a new g - x0 of the opposite sign or more than kMaxGoalScaling times the
 /// demonstrated one mirrors or amplifies the shape: planWarnings() reports both, per joint.
 ///
+/// After tau (s below exp(-alpha)) the forcing term fades out within a few hundredths of tau: the
+/// demonstration says nothing about that time, and what the last basis function extrapolates only holds the
+/// system off its goal.
+///
 /// Rollout: the exact solution of the linear spring-damper over each step with the forcing term
 /// linear in between (SpringDamperStep), exact exponential decay of the phase; one forcing
 /// evaluation per step. Steps longer than kMaxSubstep of the basis spacing are split internally, so a
@@ -88,9 +92,10 @@ public:
       std::vector<double> demo_amplitude, std::vector<AmplitudeScaling> joint_scaling, double demo_duration,
       DmpProvenance provenance, std::vector<std::string> warnings = {});
 
-  /// \brief Rolls out from t = 0 for tau (the demo's duration scaled), then on until every joint has
-  /// settled at its goal within the request's tolerances (at most kSettlingFactor tau). Samples every
-  /// dt. Throws DmpError for a request whose worst case exceeds kMaxRolloutSamples, before allocating.
+  /// \brief Rolls out from t = 0 for tau (the demo's duration scaled), then on until every joint is within
+  /// the request's tolerances of its goal (at most kSettlingFactor tau): it ends there, not after the
+  /// forcing term's slow decay has crept over the last fraction of a millimetre. Samples every dt. Throws
+  /// DmpError for a request whose worst case exceeds kMaxRolloutSamples, before allocating.
   vrrw_trajectory::JointTrajectory rollout(const RolloutRequest& request) const;
 
   /// \brief One line per concern about rolling out to \a request's start and goal (empty: as

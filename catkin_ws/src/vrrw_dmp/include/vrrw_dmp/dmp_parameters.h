@@ -35,7 +35,8 @@ struct DmpParameters
   /// too: its drift is not a motion to stretch to a new goal (a 3 mrad drift to a goal 80 mrad away would
   /// be mirrored and amplified 25 times). 0: off.
   double still_range = 0.0;
-  std::size_t derivative_half_window = 3;  ///< the local quadratic fit uses 2m+1 samples
+  /// the local quadratic fit uses at least 2m+1 samples, and as many as half the basis spacing holds
+  std::size_t derivative_half_window = 3;
 
   /// \brief D, or 2 sqrt(K) when D is unset.
   double damping() const;

@@ -1,7 +1,14 @@
 #pragma once
 #include <string>
 
+#include <vrrw_dmp/cartesian_dmp.h>
 #include <vrrw_dmp/dmp.h>
+
+namespace YAML
+{
+class Emitter;
+class Node;
+}  // namespace YAML
 
 namespace vrrw_dmp
 {
@@ -14,6 +21,21 @@ namespace vrrw_dmp
 std::string toYaml(const Dmp& dmp);
 /// \brief Parses YAML text; \a source names it in errors. Throws DmpError.
 Dmp fromYaml(const std::string& text, const std::string& source);
+
+/// \brief A model's fields (the mapping toYaml writes, without `format`) into a mapping the caller opened
+/// on \a out: how a file of another kind (a skill) carries a model.
+void emitDmpFields(YAML::Emitter& out, const Dmp& dmp);
+/// \brief A model from such a mapping; errors name \a source and the field below \a path (e.g.
+/// "instructions[1].joint_dmp."). Throws DmpError.
+Dmp parseDmpFields(const YAML::Node& node, const std::string& source, const std::string& path);
+
+/// \brief A Cartesian model's fields: `position` (emitDmpFields of the x, y, z model) and `orientation`
+/// (per axis its scaling and weights, the demonstrated start, goal and range as quaternions x, y, z, w and
+/// rotation vectors, warnings; parameters, basis and duration are the position's).
+void emitCartesianDmpFields(YAML::Emitter& out, const CartesianDmp& dmp);
+/// \brief The Cartesian model from such a mapping. Throws DmpError naming the field (a quaternion whose
+/// norm is not 1 among them).
+CartesianDmp parseCartesianDmpFields(const YAML::Node& node, const std::string& source, const std::string& path);
 
 /// \brief Writes the model file, complete or not at all (vrrw_trajectory::writeWholeFile); throws
 /// DmpError naming the path.

@@ -4,10 +4,25 @@
 #include <utility>
 #include <vector>
 
-#include <vrrw_evaluation/demonstration.h>
+#include <vrrw_demos/segmentation.h>
 
 namespace vrrw_evaluation
 {
+/// \brief The demo's instructions are vrrw_demos' (the annotated spans of the demonstration's bag).
+using vrrw_demos::Segment;
+
+/// \brief What stage 4 learned: the skill `./vrrw skill learn` writes from the demonstration's bag.
+struct LearnedSkillReport
+{
+  std::string file;            ///< skill.yaml in the report
+  double learn_seconds = 0.0;  ///< wall: reading the bag and learning
+  double grasp_learned[3] = { 0.0, 0.0, 0.0 };  ///< m, the TCP at the grasp in the drill's frame, as learned
+  double grasp_taught[3] = { 0.0, 0.0, 0.0 };   ///< ... as the teach script meant it (GraspGeometry)
+  double grasp_error_mm = 0.0;   ///< distance between the two
+  double grasp_error_deg = 0.0;  ///< angle between their orientations
+  std::map<std::string, double> cartesian_fit_rmse_m;    ///< per arm instruction
+  std::map<std::string, double> cartesian_fit_rmse_deg;  ///< per arm instruction
+};
 /// \brief One generalization trial: where the object stood, and how it ended.
 struct TrialRecord
 {
@@ -18,7 +33,8 @@ struct TrialRecord
   std::string reason;
   double final_error_m = 0.0;
   double final_angle_deg = 0.0;
-  double ik_ms = 0.0;  ///< goal transfer: every IK of the trial
+  double ik_ms = 0.0;  ///< planning the run: every IK, rollout and collision check of the trial
+  double cycle_seconds = 0.0;  ///< simulated, first goal to the gripper open
 };
 
 /// \brief Everything `./vrrw demo` measured; written as metrics.json, report.md and index.html.
@@ -39,7 +55,8 @@ struct DemoReport
   std::map<std::string, double> replay_segment_rms_rad;
   double replay_object_position_error_m = 0.0;
   double replay_object_angle_error_deg = 0.0;
-  std::map<std::string, double> dmp_fit_rmse_rad;
+  std::map<std::string, double> dmp_fit_rmse_rad;  ///< the skill's joint DMPs, per arm instruction
+  LearnedSkillReport skill;
   std::vector<TrialRecord> trials;
   double plan_ms = 0.0;      ///< planning time of the teach stage's planned motions
   double physics_rtf = 0.0;  ///< simulated seconds per wall second

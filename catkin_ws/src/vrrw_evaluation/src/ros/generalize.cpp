@@ -1,108 +1,125 @@
-// PickPlaceDemo's generalization stage and its data files (pick_place_demo.cpp has the rest).
+// PickPlaceDemo's generalization stage and its data files (pick_place_demo.cpp has the rest): the skill learned
+// from the demonstration's bag (`./vrrw skill learn`'s code) and tried on new drill poses (`skill evaluate`'s).
 #include "pick_place_demo.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
-#include <vrrw_evaluation/trial_outcome.h>
+
+#include <vrrw_common/ros/persistent_service.h>
+#include <vrrw_skills/evaluation.h>
+#include <vrrw_skills/poses.h>
+#include <vrrw_skills/ros/skill_trials.h>
+#include <vrrw_skills/skill_learning.h>
+#include <vrrw_skills/skill_yaml.h>
 
 namespace vrrw_evaluation
 {
 namespace
 {
-/// The arm goal of each arm instruction for a drill standing at `object`, through IK seeded with the
-/// demonstrated goal (same branch); near-pick must be collision-free, pick puts the fingers around it.
-bool transferGoals(WorkspaceClient& client, const Demonstration& demo, const Eigen::Isometry3d& object,
-                   const GraspGeometry& grasp, std::map<std::string, std::vector<double>>& goals, double& ik_ms,
-                   std::string& error)
+void progress(const std::string& line)
 {
-  auto demoGoal = [&](const std::string& name) { return positionsAt(demo.arm, demo.segment(name).end); };
-  const auto near = client.ik(tcpAtNearPick(object, grasp), demoGoal("move_to_near_pick"), true, error, &ik_ms);
-  if (!near)
-    return error = "near-pick: " + error, false;
-  const auto pick = client.ik(tcpAtGrasp(object, grasp), demoGoal("move_to_pick"), false, error, &ik_ms);
-  if (!pick)
-    return error = "pick: " + error, false;
-  goals = { { "move_to_near_pick", *near },
-            { "move_to_pick", *pick },
-            { "back_to_near_pick", *near },
-            { "move_to_final", demoGoal("move_to_final") } };
-  return true;
+  std::printf("demo: %s\n", line.c_str());
+  std::fflush(stdout);
 }
 }  // namespace
 
-std::vector<double> PickPlaceDemo::placeGoal(const std::vector<double>& demonstrated, double& ik_ms)
+vrrw_skills::Skill PickPlaceDemo::learnSkill(DemoReport& report)
 {
-  // The drill sits in this grasp a little differently than in the demonstration's: the goal that puts
-  // it where the demonstration released it, through IK from how it is held now.
-  const Eigen::Isometry3d held = client_.tcpPose().inverse() * client_.objectPose();
-  std::string error;
-  const auto goal = client_.ik(object_released_ * held.inverse(), demonstrated, false, error, &ik_ms);
-  if (!goal || largestJointDifference(*goal, demonstrated) > 0.3)
-    return demonstrated;
-  return *goal;
+  vrrw_skills::LearnOptions learn;
+  learn.object = cell_.object;
+  learn.robot = client_.robot().name;
+  const auto start = std::chrono::steady_clock::now();
+  const vrrw_skills::Skill skill = vrrw_skills::learnSkill({ shown_ }, learn);
+  report.skill.learn_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string file = options_.out + "/skill.yaml";
+  std::filesystem::remove(file);  // a report folder of an earlier run
+  vrrw_skills::saveSkill(skill, file);
+  report.skill.file = "skill.yaml";
+  // the learner knows only the bag; the script knows what it meant: the two grasps in the drill's frame
+  const Eigen::Isometry3d taught = object_start_.inverse() * tcpAtGrasp(object_start_, options_.grasp);
+  const Eigen::Isometry3d learned = vrrw_skills::toIsometry(skill.grasp().pose);
+  for (int i = 0; i < 3; ++i)
+  {
+    report.skill.grasp_taught[i] = taught.translation()[i];
+    report.skill.grasp_learned[i] = learned.translation()[i];
+  }
+  report.skill.grasp_error_mm = 1000.0 * (learned.translation() - taught.translation()).norm();
+  report.skill.grasp_error_deg =
+      Eigen::AngleAxisd(learned.rotation() * taught.rotation().transpose()).angle() * 180.0 / M_PI;
+  for (const vrrw_skills::SkillInstruction* instruction : skill.armInstructions())
+  {
+    report.dmp_fit_rmse_rad[instruction->name] = instruction->joint_fit_rmse;
+    report.skill.cartesian_fit_rmse_m[instruction->name] = instruction->cartesian_fit_rmse;
+    report.skill.cartesian_fit_rmse_deg[instruction->name] = instruction->cartesian_fit_rmse_deg;
+  }
+  char line[160];
+  std::snprintf(line, sizeof line, "skill learned from %s in %.2f s: grasp %.2f mm / %.2f deg from the script's",
+                report.bag_file.c_str(), report.skill.learn_seconds, report.skill.grasp_error_mm,
+                report.skill.grasp_error_deg);
+  progress(line);
+  return skill;
 }
 
-void PickPlaceDemo::generalize(const Demonstration& demo, DemoReport& report)
+void PickPlaceDemo::generalize(DemoReport& report)
 {
-  vrrw_dmp::DmpParameters parameters;
-  parameters.basis_count = 30;
-  parameters.scaling = vrrw_dmp::AmplitudeScaling::automatic;
-  parameters.still_range = 0.02;  // rad: a wrist that merely drifts while the arm carries stays put
-  const InstructionDmps dmps(demo, parameters);
-  for (const std::string& name : dmps.instructions())
-    report.dmp_fit_rmse_rad[name] = dmps.fitRmse(name);
-  const Eigen::Isometry3d demo_end = object_end_;
-  const auto poses = sampleTrialPoses(planarPose(object_start_), options_.spread, std::size_t(options_.trials),
-                                      options_.seed);
+  vrrw_skills::Skill skill;
+  try
+  {
+    skill = learnSkill(report);
+  }
+  catch (const std::exception& e)
+  {
+    progress("skill learn failed: " + std::string(e.what()));
+    return;
+  }
+  vrrw_common::PersistentServices services;
+  vrrw_skills::WorkspaceArm arm(node_, client_.robot().name, services);
+  arm.waitUntilReady(10.0);
+  vrrw_skills::ArmServices kinematics(services, arm.robot(), arm.armJoints());
+  vrrw_skills::SkillTrials trials(node_, skill, arm, kinematics, services, cell_.object, cell_.obstacles);
+  vrrw_skills::EvaluationOptions evaluation;
+  evaluation.trials = std::size_t(options_.trials);
+  evaluation.seed = options_.seed;
+  evaluation.spread = options_.spread;
+  const auto poses = vrrw_skills::evaluationPoses(skill, evaluation);
   for (std::size_t k = 0; k < poses.size(); ++k)
   {
+    const std::string row = "trial_" + std::to_string(k);
+    const bool frames = int(k) < options_.shown_trials;
+    client_.startRecording();
+    std::vector<Segment> segments;
+    double last = client_.recordingTime();
+    auto done = [&](const std::string& name) {
+      Segment segment;
+      segment.name = name;
+      segment.start = last;
+      segment.end = last = client_.recordingTime();
+      segments.push_back(segment);
+      capture(row, segments.size(), frames);
+    };
+    const std::string label = "trial " + std::to_string(k + 1) + "/" + std::to_string(poses.size());
+    const vrrw_skills::TrialResult result =
+        trials.trial(int(k), poses[k], [&](const std::string& line) { progress(label + ": " + line); }, done);
+    writeRecording(row, client_.stopRecording(), segments);
     TrialRecord trial;
-    trial.trial = int(k);
-    trial.x = poses[k].x;
-    trial.y = poses[k].y;
-    trial.yaw_deg = poses[k].yaw * 180.0 / M_PI;
-    std::string error;
-    std::map<std::string, std::vector<double>> goals;
-    if (!resetObject(placeOnTable(object_start_, poses[k]), error))
-      trial.reason = "reset: " + error;
-    else if (!transferGoals(client_, demo, client_.objectPose(), options_.grasp, goals, trial.ik_ms, error))
-      trial.reason = "skipped, " + error;
-    else
-    {
-      trial.executed = true;
-      TrialObservation seen;
-      seen.object_start = client_.objectPose();
-      std::vector<Instruction> instructions;
-      for (const std::string& name : kInstructions)
-        instructions.push_back([&, name](std::string& e) {
-          if (name == "close_gripper")
-            return client_.grip(demo.finger_closed, demo.grip_force, e);
-          if (name == "open_gripper")
-            return seen.gripper_open_at_end = client_.grip(demo.finger_open, 0.0, e);
-          if (name == "move_to_final")
-            goals[name] = placeGoal(goals[name], trial.ik_ms);
-          return client_.execute(dmps.rollout(name, client_.armJoints(), goals.at(name), 0.01, client_.maxVelocities()), e);
-        });
-      Recording recording;
-      std::vector<Segment> segments;
-      if (!perform("trial_" + std::to_string(k), int(k) < options_.shown_trials, instructions, recording, segments,
-                   error))
-        seen.failed_instruction = error;
-      seen.object_end = client_.objectPose();
-      seen.arm_contacts = recording.arm_contacts;
-      for (const TrackSample& s : recording.track)
-        seen.max_lift = std::max(seen.max_lift, s.object.translation().z() - seen.object_start.translation().z());
-      const TrialOutcome outcome = judgeTrial(seen, demo_end);
-      trial.success = outcome.success;
-      trial.reason = outcome.reason;
-      trial.final_error_m = outcome.final_error_m;
-      trial.final_angle_deg = outcome.final_angle_deg;
-    }
+    trial.trial = result.trial;
+    trial.x = result.x;
+    trial.y = result.y;
+    trial.yaw_deg = result.yaw_deg;
+    trial.executed = result.reachable;
+    trial.success = result.success;
+    trial.reason = result.reason;
+    trial.final_error_m = result.place_error_m;
+    trial.final_angle_deg = result.place_angle_deg;
+    trial.ik_ms = result.planning_ms;
+    trial.cycle_seconds = result.cycle_seconds;
     report.trials.push_back(trial);
-    std::printf("demo: trial %zu/%zu at (%.3f, %.3f, %.1f deg): %s%s%s\n", k + 1, poses.size(), trial.x, trial.y,
-                trial.yaw_deg, trial.success ? "success" : (trial.executed ? "failed" : "skipped"),
-                trial.reason.empty() ? "" : ": ", trial.reason.c_str());
+    std::printf("demo: %s at (%.3f, %.3f, %.1f deg): %s%s%s\n", label.c_str(), trial.x, trial.y, trial.yaw_deg,
+                trial.success ? "success" : (trial.executed ? "failed" : "skipped"), trial.reason.empty() ? "" : ": ",
+                trial.reason.c_str());
     std::fflush(stdout);
   }
 }
@@ -131,7 +148,7 @@ void PickPlaceDemo::writeRecording(const std::string& row, const Recording& reco
   track << "t,tcp_x,tcp_y,tcp_z,object_x,object_y,object_z,object_yaw\n";
   for (const TrackSample& s : recording.track)
   {
-    const PlanarPose planar = planarPose(s.object);
+    const vrrw_skills::PlanarPose planar = vrrw_skills::planarPose(s.object);
     track << s.time << "," << s.tcp.x() << "," << s.tcp.y() << "," << s.tcp.z() << "," << planar.x << "," << planar.y
           << "," << s.object.translation().z() << "," << planar.yaw << "\n";
   }

@@ -9,9 +9,11 @@
 #include <functional>
 #include <sstream>
 #include <vrrw_demos/run_program.h>
-#include <vrrw_evaluation/trial_outcome.h>
+#include <vrrw_skills/trial_outcome.h>
 
-#include "bag_instructions.h"
+#include <vrrw_demos/ros/demo_bag.h>
+#include <vrrw_evaluation/annotations.h>
+#include <vrrw_evaluation/joint_paths.h>
 
 namespace vrrw_evaluation
 {
@@ -24,8 +26,9 @@ void progress(const std::string& line)
 }
 }  // namespace
 
-PickPlaceDemo::PickPlaceDemo(WorkspaceClient& client, GhostOperator& ghost, HandOperator& hand, DemoOptions options)
-  : client_(client), ghost_(ghost), hand_(hand), options_(std::move(options))
+PickPlaceDemo::PickPlaceDemo(ros::NodeHandle& node, WorkspaceClient& client, GhostOperator& ghost, HandOperator& hand,
+                             const Cell& cell, DemoOptions options)
+  : node_(node), client_(client), ghost_(ghost), hand_(hand), cell_(cell), options_(std::move(options))
 {
   std::filesystem::create_directories(options_.out + "/data");
   std::filesystem::create_directories(options_.out + "/frames");
@@ -119,7 +122,9 @@ bool PickPlaceDemo::perform(const std::string& row, bool frames, const std::vect
   bool ok = true;
   for (std::size_t i = 0; i < instructions.size() && ok; ++i)
   {
-    Segment segment{ kInstructions[i], client_.recordingTime(), 0.0 };
+    Segment segment;
+    segment.name = kInstructions[i];
+    segment.start = client_.recordingTime();
     client_.annotate("instruction_start", kInstructions[i]);
     ok = instructions[i](error);
     segment.end = client_.recordingTime();
@@ -136,7 +141,7 @@ bool PickPlaceDemo::perform(const std::string& row, bool frames, const std::vect
   return ok;
 }
 
-bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& error)
+bool PickPlaceDemo::teach(DemoReport& report, std::string& error)
 {
   home_ = client_.armJoints();
   object_start_ = client_.objectPose();
@@ -184,29 +189,20 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
     },
     [&](std::string& e) { return grip(grasp.finger_closed, grasp.grip_force, e); },
     [&](std::string& e) { return drive({}, near_pick, e, carry); },
-    [&](std::string& e) {
-      const bool placed = drive({ above_place }, place, e, place_on_table);
-      object_released_ = client_.objectPose();
-      return placed;
-    },
+    [&](std::string& e) { return drive({ above_place }, place, e, place_on_table); },
     [&](std::string& e) { return grip(grasp.finger_open, 0.0, e); },
   };
   Recording recording;
-  demo = Demonstration();
-  if (!perform("demonstration", true, script, recording, demo.segments, error))
+  std::vector<Segment> scripted;
+  if (!perform("demonstration", true, script, recording, scripted, error))
     return false;
   object_end_ = client_.objectPose();
-  demonstration_start_ = recording.start_stamp;
-  demo.arm = recording.arm;
-  demo.finger_closed = grasp.finger_closed;
-  demo.finger_open = grasp.finger_open;
-  demo.grip_force = grasp.grip_force;
   report.teach_source = "scripted operator: ghost-drive with waypoints to near-pick, free-drive (a hand on the wrist) "
                         "down to the grasp, GripperCommand, ghost-drive back up and to the place (the " +
                         options_.table + " as its support surface)";
   report.teach_seconds = recording.seconds;
   report.teach_start_stamp = recording.start_stamp;
-  report.segments = demo.segments;
+  report.segments = scripted;
   report.plan_ms = plan_ms;
   report.message_counts["/" + client_.robot().name + "/joint_states"] = recording.joint_state_messages;
   report.message_counts["/physics/contacts"] = recording.contact_messages;
@@ -219,52 +215,62 @@ bool PickPlaceDemo::teach(Demonstration& demo, DemoReport& report, std::string& 
   return true;
 }
 
-bool PickPlaceDemo::segment(Demonstration& demo, DemoReport& report, std::string& error)
+bool PickPlaceDemo::segment(DemoReport& report, std::string& error)
 {
   if (report.bag_file.empty())
     return error = "no bag was recorded", false;
-  std::vector<Segment> in_bag;
   try
   {
-    in_bag = bagInstructions(report.bag_file, demonstration_start_);
+    shown_ = vrrw_demos::readDemonstration(report.bag_file, { client_.robot().name });
+    instructions_ = annotatedInstructions(shown_);
   }
   catch (const std::exception& e)
   {
     return error = e.what(), false;
   }
   std::string names;
-  for (const Segment& s : in_bag)
+  for (const Segment& s : instructions_)
     names += (names.empty() ? "" : ", ") + s.name;
-  if (in_bag.size() != kInstructions.size() || !std::equal(kInstructions.begin(), kInstructions.end(), in_bag.begin(),
-                                                           [](const std::string& k, const Segment& s) { return k == s.name; }))
+  if (instructions_.size() != kInstructions.size() ||
+      !std::equal(kInstructions.begin(), kInstructions.end(), instructions_.begin(),
+                  [](const std::string& k, const Segment& s) { return k == s.name; }))
     return error = report.bag_file + ": /demos/events: instructions " + (names.empty() ? "none" : names) +
                    " (expected the six of the paper in order)",
            false;
-  double shift = 0.0;  // the script's clock against the bag's stamps
-  for (std::size_t i = 0; i < in_bag.size(); ++i)
-    shift = std::max({ shift, std::abs(in_bag[i].start - demo.segments[i].start),
-                       std::abs(in_bag[i].end - demo.segments[i].end) });
+  // the bag's times count from the recorder's start, the script's from the runner's: the same instant
+  const double offset = shown_.start_stamp - report.teach_start_stamp;
+  double shift = 0.0;
+  for (std::size_t i = 0; i < instructions_.size(); ++i)
+    shift = std::max({ shift, std::abs(instructions_[i].start + offset - report.segments[i].start),
+                       std::abs(instructions_[i].end + offset - report.segments[i].end) });
   char within[64];
   std::snprintf(within, sizeof within, "%.1f ms", shift * 1e3);
   progress("segments from " + report.bag_file + " (/demos/events), within " + within + " of the script's clock");
-  demo.segments = report.segments = in_bag;
+  report.segments = instructions_;
+  for (Segment& s : report.segments)
+    s.start += offset, s.end += offset;
   return true;
 }
 
-bool PickPlaceDemo::replay(const Demonstration& demo, DemoReport& report, std::string& error)
+bool PickPlaceDemo::replay(DemoReport& report, std::string& error)
 {
   if (!resetObject(object_start_, error))
     return false;
+  const vrrw_demos::RobotTrack& track = shown_.robots.front();
   std::vector<Instruction> instructions;
-  for (const Segment& segment : demo.segments)
+  for (const Segment& segment : instructions_)
     instructions.push_back([&, segment](std::string& e) {
-      if (segment.name == "close_gripper")
-        return client_.grip(demo.finger_closed, demo.grip_force, e);
-      if (segment.name == "open_gripper")
-        return client_.grip(demo.finger_open, 0.0, e);
-      vrrw_trajectory::JointTrajectory motion = slice(demo.arm, segment.start, segment.end);
-      addVelocities(motion);  // as recorded, from the measured positions; at rest at the ends
-      return client_.execute(motion, e);
+      if (segment.gripper)
+      {
+        // the goal the operator sent in this instruction: its position and effort
+        vrrw_demos::GripperGoal goal{ segment.start, segment.name == "close_gripper" ? options_.grasp.finger_closed
+                                                                                    : options_.grasp.finger_open, 0.0 };
+        for (const vrrw_demos::GripperGoal& sent : track.gripper_goals)
+          if (sent.time >= segment.start - 0.05 && sent.time <= segment.end)
+            goal = sent;
+        return client_.grip(goal.position, goal.max_effort, e);
+      }
+      return client_.execute(instructionGoal(track, segment.start, segment.end), e);
     });
   Recording recording;
   std::vector<Segment> segments;
@@ -274,13 +280,14 @@ bool PickPlaceDemo::replay(const Demonstration& demo, DemoReport& report, std::s
   report.replay_object_position_error_m = (end.translation() - object_end_.translation()).norm();
   report.replay_object_angle_error_deg =
       Eigen::AngleAxisd(end.rotation() * object_end_.rotation().transpose()).angle() * 180.0 / M_PI;
+  const vrrw_demos::RobotTrack replayed = asTrack(recording.arm, track.robot);
   double sum = 0.0, duration = 0.0;
   for (std::size_t i = 0; i < segments.size(); ++i)
   {
     if (isGripperInstruction(segments[i].name))
       continue;
-    const auto reference = slice(demo.arm, demo.segments[i].start, demo.segments[i].end);
-    const double rms = jointRms(reference, slice(recording.arm, segments[i].start, segments[i].end));
+    const auto reference = instructionGoal(track, instructions_[i].start, instructions_[i].end);
+    const double rms = jointRms(reference, instructionGoal(replayed, segments[i].start, segments[i].end));
     report.replay_segment_rms_rad[segments[i].name] = rms;
     sum += rms * rms * reference.duration();
     duration += reference.duration();

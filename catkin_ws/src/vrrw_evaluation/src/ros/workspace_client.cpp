@@ -11,7 +11,7 @@
 #include <vrrw_msgs/Event.h>
 #include <vrrw_msgs/Plan.h>
 #include <vrrw_physics/SetObjectPose.h>
-#include <vrrw_evaluation/trial_outcome.h>
+#include <vrrw_skills/trial_outcome.h>
 
 namespace vrrw_evaluation
 {
@@ -339,7 +339,7 @@ void WorkspaceClient::onContacts(const vrrw_physics::Contacts::ConstPtr& msg)
   if (bag_open_)
     bag_.write("/physics/contacts", msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp, *msg);
   for (const auto& c : msg->contacts)
-    if (isArmCollision(c.body_a, c.body_b, robot_.name, obstacles_))
+    if (vrrw_skills::isArmCollision(c.body_a, c.body_b, robot_.name, obstacles_))
       recording_data_.arm_contacts.insert(c.body_a + "|" + c.body_b);
 }
 

@@ -1,0 +1,32 @@
+#pragma once
+// A workspace of its own for `skill evaluate`: `./vrrw up SCENE --mode physics` (the one way a workspace comes
+// up) in a process group of its own, on a master port nobody uses, its output in a log; stopped whole.
+#include <string>
+#include <sys/types.h>
+
+namespace vrrw_skills
+{
+class WorkspaceProcess
+{
+public:
+  /// \brief Starts it; the scene is an argument of ./vrrw (argv, no shell). ROS_MASTER_URI of this process is
+  /// set to the new master (call before ros::init). Port: VRRW_ROS_PORT, else the first free one from 11611.
+  /// Throws SkillRefusal when ./vrrw cannot be found (VRRW_ROOT) or started.
+  WorkspaceProcess(const std::string& scene, const std::string& log_file);
+  /// \brief Stops the process group: SIGINT, and SIGKILL if it is not gone after 15 s.
+  ~WorkspaceProcess();
+  WorkspaceProcess(const WorkspaceProcess&) = delete;
+  WorkspaceProcess& operator=(const WorkspaceProcess&) = delete;
+
+  const std::string& masterUri() const { return master_uri_; }
+  /// \brief False once the process has ended (a bad scene, a crash).
+  bool running() const;
+  /// \brief The log's last lines that say what went wrong (errors, dead processes).
+  std::string trouble() const;
+
+private:
+  pid_t pid_ = -1;
+  std::string master_uri_;
+  std::string log_file_;
+};
+}  // namespace vrrw_skills

@@ -1,0 +1,83 @@
+#!/usr/bin/python3
+"""`./vrrw skill` refusing bad input as a user meets it, without a workspace: each is one line naming the file,
+field or option and the reason, exit 2, nothing written, nothing started. About 20 seconds."""
+import os
+import shutil
+import socket
+import subprocess
+import tempfile
+import time
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, '../../../..'))
+VRRW = os.path.join(ROOT, 'vrrw')
+BOX_CELL = os.path.join(HERE, 'data', 'box_cell.yaml')
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(('127.0.0.1', 0))
+        return s.getsockname()[1]
+
+
+class SkillToolBadInput(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = tempfile.mkdtemp(prefix='vrrw_skill_tool_')
+        cls.env = dict(os.environ, ROS_MASTER_URI=f'http://localhost:{free_port()}')  # nobody listens there
+        cls.skill = os.path.join(HERE, 'data', 'box_skill.yaml')  # learned from a box taught in box_cell.yaml
+
+    def refuse(self, arguments, expected, exit_code=2):
+        start = time.monotonic()
+        result = subprocess.run([VRRW, 'skill'] + arguments, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                text=True, env=self.env, timeout=60)
+        self.assertEqual(result.returncode, exit_code, result.stderr)
+        lines = result.stderr.strip().splitlines()
+        self.assertEqual(len(lines), 1, result.stderr)
+        self.assertIn(expected, lines[0])
+        return time.monotonic() - start
+
+    def test_learn(self):
+        out = os.path.join(self.folder, 'never.yaml')
+        self.refuse(['learn', '/nonexistent/demo.bag', '--object', 'box', '--out', out],
+                    '/nonexistent/demo.bag: no such file')
+        garbage = os.path.join(self.folder, 'cut.bag')
+        with open(garbage, 'wb') as f:
+            f.write(b'#ROSBAG V2.0\n' + b'\0' * 100)
+        self.refuse(['learn', garbage, '--object', 'box', '--out', out], './vrrw demos recover')
+        self.refuse(['learn', '--object', 'box', '--out', out], 'missing BAG')
+        self.refuse(['learn', garbage, '--out', out], '--object')
+        self.assertFalse(os.path.exists(out))
+
+    def test_skill_files(self):
+        truncated = os.path.join(self.folder, 'truncated.yaml')
+        with open(truncated, 'w') as f:
+            f.write('format: vrrw_skills/1\nrobot: {name: ur5e, arm_joints: [a, b\n')
+        self.refuse(['evaluate', truncated, '--scene', BOX_CELL], truncated + ':')
+        other = os.path.join(self.folder, 'other.yaml')
+        with open(other, 'w') as f:
+            f.write('format: vrrw_skills/9\n')
+        self.refuse(['run', other], "format: 'vrrw_skills/9' is not 'vrrw_skills/1' (a skill of another version)")
+        self.refuse(['run', os.path.join(self.folder, 'missing.yaml')], 'cannot open for reading')
+
+    def test_evaluate_checks_everything_before_it_starts(self):
+        out = os.path.join(self.folder, 'evaluation')
+        self.refuse(['evaluate', self.skill, '--scene', 'pick_place_drill', '--out', out],
+                    "pick_place_drill: objects: no object 'box' (the scene has: table, drill, bin)")
+        self.refuse(['evaluate', self.skill, '--scene', BOX_CELL, '--robot', 'ur10e', '--out', out],
+                    "robots: no robot 'ur10e' (the scene has: ur5e)")
+        self.refuse(['evaluate', self.skill, '--scene', 'no_such_cell', '--out', out], 'no_such_cell')
+        self.refuse(['evaluate', self.skill, '--scene', BOX_CELL, '--trials', '0', '--out', out], '--trials')
+        self.refuse(['evaluate', self.skill, '--scene', BOX_CELL, '--spread', '0.1,-0.1,30', '--out', out],
+                    '--spread')
+        self.refuse(['evaluate', self.skill, '--scene', BOX_CELL, '--spread', '0.1,0.1', '--out', out], '--spread')
+        self.assertFalse(os.path.exists(out))
+
+    def test_run_without_a_workspace_says_so_quickly(self):
+        seconds = self.refuse(['run', self.skill], 'no workspace at ', exit_code=2)
+        self.assertLess(seconds, 10.0)  # the check itself answers within 2 s; the tool's start is the rest
+
+
+if __name__ == '__main__':
+    unittest.main()
