@@ -14,6 +14,9 @@ import unittest
 
 import yaml
 
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # catkin runs nose with -P: no test folder on the path
 from teaching import VRRW, HERE, run, segment_errors, stop, teach
 
 SCENE = os.path.join(HERE, 'data', 'box_cell.yaml')

@@ -9,6 +9,9 @@ import math
 import os
 import unittest
 
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # catkin runs nose with -P: no test folder on the path
 from teaching import run, segment_errors, stop, teach
 
 GRASP = (0.03, 0.0, 0.203)  # across the motor housing over the centre of mass, as ./vrrw demo's script takes it
