@@ -32,7 +32,11 @@ std::string GripperController::check(double position, double max_effort) const
 
 void GripperController::start(double position, double now, double max_effort)
 {
-  effort_limit_ = max_effort > 0.0 && options_.lever_arm > 0.0 ? max_effort * options_.lever_arm : 0.0;
+  // 0 asks for the gripper's rated force, not for the drive's own limit: the simulated 2F-85's finger drive
+  // squeezes 625 N per pad at its limit, 2.7 times what the real one is rated for, and a squeeze that hard
+  // pushes a held object out of the fingers or the arm off its goal (issue 22).
+  const double force = max_effort > 0.0 ? max_effort : options_.max_grip_force;
+  effort_limit_ = force > 0.0 && options_.lever_arm > 0.0 ? force * options_.lever_arm : 0.0;
   const double from = motion_ ? motion_->sample(now - start_time_).positions[0] : hold_;
   vrrw_trajectory::JointTrajectory move;
   move.joint_names = { joint_ };

@@ -78,8 +78,13 @@ TEST(GripperController, MaxEffortBecomesTheActuatedJointsDriveLimit)
   g.start(0.5, 0.0, 100.0);
   g.update(0.01);
   EXPECT_NEAR(hw.effortLimits()[0], 1.82, 1e-12);
-  g.start(0.2, 1.0, 0.0);  // 0: the configured limit again
+  g.start(0.2, 1.0, 0.0);  // 0: the rated grip force (issue 22: the drive's own limit squeezed 625 N per pad)
   g.update(1.01);
+  EXPECT_NEAR(hw.effortLimits()[0], 235.0 * 0.0182, 1e-12);
+  o.max_grip_force = 0.0;  // no rating: 0 leaves the configured drive limit
+  GripperController unrated(hw, "g_finger_joint", o);
+  unrated.start(0.2, 2.0, 0.0);
+  unrated.update(2.01);
   EXPECT_EQ(hw.effortLimits()[0], 0.0);
   EXPECT_EQ(g.check(0.5, 300.0), "max_effort 300 N exceeds the gripper's rated grip force 235 N");
   EXPECT_EQ(g.check(0.5, -1.0), "max_effort -1: must be a finite grip force >= 0 N (0: the default)");

@@ -115,22 +115,35 @@ btScalar JointRowSolver::solveSingleIteration(int iteration, btCollisionObject**
                                               btTypedConstraint** constraints, int numConstraints,
                                               const btContactSolverInfo& infoGlobal, btIDebugDraw* debugDrawer)
 {
-  // The sequence of btMultiBodyConstraintSolver::solveSingleIteration (Bullet 3.24): rigid-body rows,
-  // then the multibody joint rows (inner sweeps, alternating direction), then multibody contacts and
-  // friction; the squared residual is the largest of all.
+  // Bullet 3.24's btMultiBodyConstraintSolver::solveSingleIteration sweeps rigid-body rows, then the multibody
+  // joint rows (inner sweeps, alternating direction), then multibody contacts and friction. With
+  // joint_rows_last_ the joint rows come after the contacts (see the class comment); the squared residual is
+  // the largest of all either way.
   btScalar residual = btSequentialImpulseConstraintSolver::solveSingleIteration(
       iteration, bodies, numBodies, manifoldPtr, numManifolds, constraints, numConstraints, infoGlobal, debugDrawer);
-
   if (iteration == 0 || rows_.size() != std::size_t(m_multiBodyNonContactConstraints.size()))
     indexRows();
+  if (joint_rows_last_)
+  {
+    residual = btMax(residual, solveContactRows(iteration, infoGlobal));
+    return btMax(residual, solveJointRows(iteration, infoGlobal));
+  }
+  residual = btMax(residual, solveJointRows(iteration, infoGlobal));
+  return btMax(residual, solveContactRows(iteration, infoGlobal));
+}
+
+btScalar JointRowSolver::solveJointRows(int iteration, const btContactSolverInfo& infoGlobal)
+{
   const int n = m_multiBodyNonContactConstraints.size();
+  // Bullet alternates the direction every sweep (symmetric Gauss-Seidel converges faster).
+  const bool ascending = iteration & 1;
   btScalar joint_residual = 0;
   for (int inner = 0; inner < infoGlobal.m_numNonContactInnerIterations; ++inner)
   {
     joint_residual = 0;
     for (int j = 0; j < n; ++j)
     {
-      const int r = (iteration & 1) ? j : n - 1 - j;
+      const int r = ascending ? j : n - 1 - j;
       btMultiBodySolverConstraint& c = m_multiBodyNonContactConstraints[r];
       const SparseRow& row = rows_[std::size_t(r)];
       const btScalar change = row.terms >= 0 ? resolveSparse(c, row) : resolveSingleConstraintRowGeneric(c);
@@ -141,8 +154,12 @@ btScalar JointRowSolver::solveSingleIteration(int iteration, btCollisionObject**
         c.m_multiBodyB->setPosUpdated(false);
     }
   }
-  residual = btMax(residual, joint_residual);
+  return joint_residual;
+}
 
+btScalar JointRowSolver::solveContactRows(int iteration, const btContactSolverInfo& infoGlobal)
+{
+  btScalar residual = 0;
   const auto touched = [](btMultiBodySolverConstraint& c) {
     if (c.m_multiBodyA)
       c.m_multiBodyA->setPosUpdated(false);

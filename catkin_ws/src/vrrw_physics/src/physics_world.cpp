@@ -87,7 +87,7 @@ void PhysicsWorld::createBulletWorld()
   {
     self_collision_filter_ = std::make_unique<SelfCollisionFilter>();
     broadphase_->getOverlappingPairCache()->setOverlapFilterCallback(self_collision_filter_.get());
-    solver_ = std::make_unique<JointRowSolver>();
+    solver_ = std::make_unique<JointRowSolver>(options_.joint_rows_last);
     world_ = std::make_unique<MultiBodyWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                               collision_config_.get());
   }

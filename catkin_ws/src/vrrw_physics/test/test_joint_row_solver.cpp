@@ -35,6 +35,7 @@ Trajectory simulate(bool reference)
   // prediction) with stock Bullet; the joint-space forward dynamics changes rounding and is compared with
   // Bullet's articulated-body pass in test_joint_space_inertia.
   options.joint_space_dynamics = false;
+  options.joint_rows_last = false;  // Bullet's order of joint rows and contacts in a sweep
   PhysicsWorld world(vrrw_scene::loadScene("paper_multibot", load), options);
   world.setMode("ur5e", DriveMode::Compliant);
   const Eigen::Vector3d wrist = world.framePose("ur5e_wrist_1_link").translation();

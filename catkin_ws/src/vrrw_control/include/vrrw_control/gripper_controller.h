@@ -19,7 +19,8 @@ struct GripperOptions
   /// \brief m: a pad force F (GripperCommand max_effort, N) is the actuated joint's drive force limit
   /// F x lever_arm (the gripper config's fingertip_lever_arm). 0: max_effort is not enforced.
   double lever_arm = 0.0;
-  double max_grip_force = 0.0;  ///< N, the rated pad force; larger max_effort is refused (0: no bound)
+  double max_grip_force = 0.0;  ///< N, the rated pad force: what max_effort 0 squeezes with; larger
+                                ///< max_effort is refused (0: no bound, max_effort 0 the drive's own limit)
 };
 
 /// \brief Moves the actuated gripper joint along a smooth cubic to the commanded position and
@@ -38,10 +39,11 @@ public:
   GripperController(RobotHardware& hardware, const std::string& joint, GripperOptions options);
 
   /// \brief Empty when acceptable, else one line naming the field and the reason. `max_effort`: the
-  /// pad force in N, as Robotiq rates grip force (0: the configured drive limit).
+  /// pad force in N, as Robotiq rates grip force (0: the rated max_grip_force; without one, the configured
+  /// drive limit).
   std::string check(double position, double max_effort = 0.0) const;
-  /// \brief Moves to `position`, squeezing with at most `max_effort` N per pad (0: the configured
-  /// drive limit) until the next goal.
+  /// \brief Moves to `position`, squeezing with at most `max_effort` N per pad (0: the rated max_grip_force;
+  /// without one, the configured drive limit) until the next goal.
   void start(double position, double now, double max_effort = 0.0);
   void stop(double now);
   /// \brief Ends the goal and forgets the state: the next update() holds what the hardware commands then.

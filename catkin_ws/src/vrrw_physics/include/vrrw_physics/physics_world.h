@@ -48,6 +48,9 @@ struct WorldOptions
   int solver_inner_iterations = 5;  ///< sweeps over joint rows (drives, couplings, limits) per sweep
                                      ///< while a robot link touches something (1 otherwise)
   double solver_residual = 1e-9;     ///< stop sweeping when the squared impulse change falls below
+  bool joint_rows_last = true;       ///< each sweep solves the joint rows after the contacts, so the drives
+                                     ///< see the velocities a step ends with (JointRowSolver; false: Bullet's
+                                     ///< order, contacts last; ignored with bullet_reference)
   bool gravity_compensation = true;  ///< feed-forward torques cancelling gravity on each robot
   bool payload_compensation = true;  ///< with it, also the weight of what a robot holds (heldObjects())
   bool bullet_reference = false;     ///< true: stock Bullet (btMultiBodyDynamicsWorld and
