@@ -63,6 +63,9 @@ const RobotTrack& taughtTrack(const Demonstration& demo, const std::string& robo
   std::vector<std::string> found;
   for (const RobotTrack& track : demo.robots)
     found.push_back(track.robot);
+  if (demo.robots.empty())
+    throw SkillError(where(demo) + ": joint_states: no robot's joint states recorded (a bag of `./vrrw record` "
+                     "or /demos/start has them)");
   if (robot.empty())
   {
     if (demo.robots.size() != 1)

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <vrrw_skills/skill_error.h>
@@ -123,6 +124,16 @@ TEST(SkillLearning, DemonstrationsThatDoNotShowTheTaskAreRefused)
     state.gripper = 0.0;
   EXPECT_EQ(refusalOf({ never_closed }).rfind("xyz.bag: robot 'bot': the gripper never closed", 0), 0u)
       << refusalOf({ never_closed });
+  auto never_opened = vrrw_skills_test::xyzPickPlace();
+  never_opened.robots[0].gripper_goals.pop_back();
+  for (auto& state : never_opened.robots[0].states)
+    state.gripper = std::max(state.gripper, state.time > 5.0 ? 0.5 : 0.0);
+  EXPECT_EQ(refusalOf({ never_opened }).rfind("xyz.bag: robot 'bot': the gripper never opened after it closed", 0), 0u)
+      << refusalOf({ never_opened });
+  auto no_robot = vrrw_skills_test::xyzPickPlace();
+  no_robot.robots.clear();
+  EXPECT_EQ(refusalOf({ no_robot }), "xyz.bag: joint_states: no robot's joint states recorded (a bag of `./vrrw "
+                                     "record` or /demos/start has them)");
   auto unmoved = vrrw_skills_test::xyzPickPlace();
   for (auto& pose : unmoved.objects["box"])
     pose.pose = unmoved.objects["box"].front().pose;
@@ -141,6 +152,11 @@ TEST(SkillLearning, DemonstrationsThatDoNotShowTheTaskAreRefused)
                         0),
             0u)
       << mixed;
+  auto other_object = vrrw_skills_test::xyzPickPlace("other.bag");
+  other_object.objects["crate"] = other_object.objects["box"];
+  other_object.objects.erase("box");
+  EXPECT_EQ(refusalOf({ vrrw_skills_test::xyzPickPlace(), other_object }),
+            "other.bag: /tf: no pose of object 'box' (objects in the bag: crate, table)");
   EXPECT_EQ(refusalOf({}), "skill learn: no demonstration given");
 }
 

@@ -74,6 +74,21 @@ class SkillToolBadInput(unittest.TestCase):
         self.refuse(['evaluate', self.skill, '--scene', BOX_CELL, '--spread', '0.1,0.1', '--out', out], '--spread')
         self.assertFalse(os.path.exists(out))
 
+    def test_evaluate_refuses_a_port_in_use(self):
+        # VRRW_ROS_PORT where a master (the user's workspace) listens: evaluate would add its nodes to it
+        out = os.path.join(self.folder, 'evaluation_port')
+        with socket.socket() as taken:
+            taken.bind(('', 0))
+            taken.listen()
+            port = taken.getsockname()[1]
+            result = subprocess.run([VRRW, 'skill', 'evaluate', self.skill, '--scene', BOX_CELL, '--out', out],
+                                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60,
+                                    env=dict(self.env, VRRW_ROS_PORT=str(port)))
+        self.assertEqual(result.returncode, 2, result.stderr)
+        self.assertEqual(result.stderr.strip(), f'skill evaluate: VRRW_ROS_PORT: port {port} is in use (a running '
+                                                'workspace?); evaluate starts its own: unset it or choose a free port')
+        self.assertFalse(os.path.exists(out))
+
     def test_run_without_a_workspace_says_so_quickly(self):
         seconds = self.refuse(['run', self.skill], 'no workspace at ', exit_code=2)
         self.assertLess(seconds, 10.0)  # the check itself answers within 2 s; the tool's start is the rest

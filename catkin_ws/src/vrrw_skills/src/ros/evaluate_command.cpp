@@ -163,6 +163,7 @@ int evaluateCommand(int argc, char** argv)
   report.object_end = skill.object_end;
   const std::set<std::string> obstacles = checkScene(report.scene, report.robot, report.object, skill.place_on);
   const std::string out = options.text("out", "skill_evaluation");
+  const int port = workspacePort();
   std::error_code error;
   std::filesystem::create_directories(out, error);
   if (error)
@@ -172,7 +173,7 @@ int evaluateCommand(int argc, char** argv)
   std::signal(SIGTERM, onInterrupt);
   std::cout << "skill evaluate: bringing up " << report.scene << " in physics (log " << out << "/workspace.log)"
             << std::endl;
-  WorkspaceProcess workspace(report.scene, out + "/workspace.log");
+  WorkspaceProcess workspace(report.scene, out + "/workspace.log", port);
   int ros_argc = 1;
   ros::init(ros_argc, argv, "skill_evaluate", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
   waitForWorkspace(workspace, report.robot, 90.0);

@@ -23,6 +23,8 @@ namespace
 bool portFree(int port)
 {
   const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  const int reuse = 1;  // as the master binds: a port whose last connections wait out TIME_WAIT is free
+  ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &reuse, sizeof(reuse));
   sockaddr_in address{};
   address.sin_family = AF_INET;
   address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
@@ -31,25 +33,36 @@ bool portFree(int port)
   ::close(fd);
   return free;
 }
+}  // namespace
 
-int masterPort()
+int workspacePort()
 {
-  if (const char* port = std::getenv("VRRW_ROS_PORT"))
-    return std::atoi(port);
+  if (const char* text = std::getenv("VRRW_ROS_PORT"))
+  {
+    // the workspace is evaluate's own: a master already there (the user's workspace) would get a second
+    // set of nodes
+    const int port = std::atoi(text);
+    if (port <= 0 || port > 65535)
+      throw SkillError(std::string("VRRW_ROS_PORT: '") + text + "' is not a port number");
+    if (!portFree(port))
+      throw SkillError("VRRW_ROS_PORT: port " + std::to_string(port) +
+                       " is in use (a running workspace?); evaluate starts its own: unset it or choose a free port");
+    return port;
+  }
   for (int port = 11611; port < 11711; ++port)
     if (portFree(port))
       return port;
   throw SkillRefusal("no free port for a ROS master in 11611-11710 (set VRRW_ROS_PORT)");
 }
-}  // namespace
 
-WorkspaceProcess::WorkspaceProcess(const std::string& scene, const std::string& log_file) : log_file_(log_file)
+WorkspaceProcess::WorkspaceProcess(const std::string& scene, const std::string& log_file, int port)
+  : log_file_(log_file)
 {
   const char* root = std::getenv("VRRW_ROOT");
   if (!root)
     throw SkillRefusal("VRRW_ROOT is not set: run it as ./vrrw skill evaluate ...");
   const std::string vrrw = std::string(root) + "/vrrw";
-  master_uri_ = "http://localhost:" + std::to_string(masterPort());
+  master_uri_ = "http://localhost:" + std::to_string(port);
   ::setenv("ROS_MASTER_URI", master_uri_.c_str(), 1);
   const int log = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (log < 0)

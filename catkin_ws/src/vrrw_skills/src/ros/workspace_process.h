@@ -6,13 +6,17 @@
 
 namespace vrrw_skills
 {
+/// \brief The master port of evaluate's workspace: VRRW_ROS_PORT, else the first free one from 11611. Throws
+/// SkillError when VRRW_ROS_PORT is no port or in use (a master there would get a second set of nodes).
+int workspacePort();
+
 class WorkspaceProcess
 {
 public:
-  /// \brief Starts it; the scene is an argument of ./vrrw (argv, no shell). ROS_MASTER_URI of this process is
-  /// set to the new master (call before ros::init). Port: VRRW_ROS_PORT, else the first free one from 11611.
-  /// Throws SkillRefusal when ./vrrw cannot be found (VRRW_ROOT) or started.
-  WorkspaceProcess(const std::string& scene, const std::string& log_file);
+  /// \brief Starts it on \a port; the scene is an argument of ./vrrw (argv, no shell). ROS_MASTER_URI of this
+  /// process is set to the new master (call before ros::init). Throws SkillRefusal when ./vrrw cannot be found
+  /// (VRRW_ROOT) or started.
+  WorkspaceProcess(const std::string& scene, const std::string& log_file, int port);
   /// \brief Stops the process group: SIGINT, and SIGKILL if it is not gone after 15 s.
   ~WorkspaceProcess();
   WorkspaceProcess(const WorkspaceProcess&) = delete;
