@@ -96,6 +96,13 @@ class QuickDemoTest(unittest.TestCase):
             if trial['success']:
                 self.assertLess(trial['final_error_m'], 0.03)
 
+    def test_skill_grasp_as_the_script_meant_it(self):
+        # issue 19: the grasp skill learn finds in the bag within 2 mm / 1 deg of the teach script's own
+        # (0.73 mm / 0.18 deg measured: the drill settles a little in the closing fingers)
+        skill = self.metrics['skill']
+        self.assertLess(skill['grasp_error_mm'], 2.0)
+        self.assertLess(skill['grasp_error_deg'], 1.0)
+
     def test_physics_kept_real_time_and_the_report_is_whole(self):
         # 0.98 on a quiet machine, 0.78 while other builds loaded it to 10: a stalled physics node is < 0.5.
         self.assertGreater(self.metrics['physics']['rtf'], 0.5)

@@ -1,5 +1,5 @@
-"""What the teaching tests share: a workspace of their own brought up as a user does (./vrrw up, a recorder beside
-it), a scripted teacher from outside, and the check of a skill's segments against where the teacher acted."""
+"""What the teaching tests share: a workspace of their own brought up as a user does (./vrrw up, with its
+recorder), a scripted teacher from outside, and the check of a skill's segments against where the teacher acted."""
 import json
 import os
 import signal
@@ -49,10 +49,9 @@ def stop(process):
             os.killpg(process.pid, signal.SIGKILL)
 
 
-
 def teach(scene, teacher_arguments, name):
-    """Brings scene up in physics with a recorder on a master of its own (ROS_MASTER_URI of this process), lets
-    scripted_teacher.py teach with teacher_arguments, and returns (folder, bag, truth, processes still running)."""
+    """Brings scene up in physics (its recorder with it) on a master of its own (ROS_MASTER_URI of this process),
+    lets scripted_teacher.py teach with teacher_arguments, and returns (folder, bag, truth, processes running)."""
     folder = tempfile.mkdtemp(prefix=f'vrrw_teach_{name}_')
     bag, truth = os.path.join(folder, name + '.bag'), os.path.join(folder, 'truth.json')
     os.environ['ROS_MASTER_URI'] = f'http://localhost:{free_port()}'
@@ -60,10 +59,11 @@ def teach(scene, teacher_arguments, name):
     processes = []
     try:
         with open(os.path.join(folder, 'workspace.log'), 'w') as log:
-            for command in ([VRRW, 'up', scene, '--mode', 'physics'], ['rosrun', 'vrrw_demos', 'recorder_node']):
-                processes.append(subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT,
-                                                  start_new_session=True))
-                wait_for_service('/ur5e/ghost/execute' if command[1] == 'up' else '/demos/start', 120.0)
+            # every ./vrrw up runs the workspace's recorder, idle until /demos/start
+            processes.append(subprocess.Popen([VRRW, 'up', scene, '--mode', 'physics'], stdout=log,
+                                              stderr=subprocess.STDOUT, start_new_session=True))
+            for service in ('/ur5e/ghost/execute', '/demos/start'):
+                wait_for_service(service, 120.0)
         teacher = subprocess.run(['/usr/bin/python3', os.path.join(HERE, 'scripted_teacher.py'), '--truth', truth,
                                   '--bag', bag] + teacher_arguments, timeout=400)
         assert teacher.returncode == 0, 'the scripted teacher failed'

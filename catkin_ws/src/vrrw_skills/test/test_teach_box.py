@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Another object than the drill, as a new user teaches it: a box cell up in physics (`./vrrw up`), a recorder
-beside it, and a teacher from outside (scripted_teacher.py: ghost services and GripperCommand only, no
+"""Another object than the drill, as a new user teaches it: a box cell up in physics (`./vrrw up`, its recorder
+with it), and a teacher from outside (scripted_teacher.py: ghost services and GripperCommand only, no
 annotation, a hesitant pace) who picks the box and sets it down 27 cm away; `./vrrw skill learn` on the bag,
 `./vrrw skill run` on the box moved elsewhere, then `./vrrw skill evaluate` over 10 seeded poses. Asserts the
 segmentation against where the teacher's actions were, the learned grasp against the teacher's intent, the
