@@ -1,5 +1,6 @@
 // SkillPlanner: goals from keyframes (goalPoses, solveGoals), a motion per arm instruction (joint DMP on the
-// taught arm, Cartesian DMP + IK on another), each checked state by state (checkPiece).
+// taught arm, Cartesian DMP + IK on another or where the joint rollout collides), each checked state by state
+// (checkPiece, armStep).
 #include <vrrw_skills/skill_plan.h>
 
 #include <algorithm>
@@ -243,6 +244,39 @@ void SkillPlanner::checkPiece(const std::string& instruction, const vrrw_traject
   }
 }
 
+PlannedStep SkillPlanner::armStep(const std::string& name, const SkillScene& scene, const std::vector<double>& from)
+{
+  const SkillInstruction& instruction = *skill_.instruction(name);
+  const std::vector<double>& goal = goals_.at(name);
+  PlannedStep step;
+  step.instruction = name;
+  step.cartesian = !taughtArm(scene);
+  step.trajectory = motion(instruction, scene, from, goal);
+  try
+  {
+    checkPiece(name, step.trajectory);
+    return step;
+  }
+  catch (const SkillRefusal& joint_refusal)
+  {
+    if (step.cartesian)
+      throw;
+    try
+    {
+      step.trajectory = cartesianMotion(instruction, scene, from, goal);
+      step.cartesian = true;
+      checkPiece(name, step.trajectory);
+      return step;
+    }
+    catch (const SkillRefusal& cartesian_refusal)
+    {
+      const std::string why = cartesian_refusal.what();
+      throw SkillRefusal(std::string(joint_refusal.what()) + " (along the Cartesian DMP too: " +
+                         why.substr(why.find(": ") + 2) + ")");
+    }
+  }
+}
+
 PlannedStep SkillPlanner::gripperStep(const std::string& name) const
 {
   PlannedStep step;
@@ -266,12 +300,8 @@ std::vector<PlannedStep> SkillPlanner::approach(const SkillScene& scene)
   std::vector<double> from = scene.joints;
   for (const char* name : { "near_pick", "pick" })
   {
-    PlannedStep step;
-    step.instruction = name;
-    step.trajectory = motion(*skill_.instruction(name), scene, from, goals_.at(name));
-    checkPiece(name, step.trajectory);
+    steps.push_back(armStep(name, scene, from));
     from = goals_.at(name);
-    steps.push_back(std::move(step));
   }
   steps.push_back(gripperStep("close_gripper"));
   return steps;
@@ -295,12 +325,8 @@ std::vector<PlannedStep> SkillPlanner::carry(const SkillScene& scene, const Cart
   {
     if (!skill_.instruction(name))
       continue;
-    PlannedStep step;
-    step.instruction = name;
-    step.trajectory = motion(*skill_.instruction(name), scene, from, goals_.at(name));
-    checkPiece(name, step.trajectory);
+    steps.push_back(armStep(name, scene, from));
     from = goals_.at(name);
-    steps.push_back(std::move(step));
   }
   steps.push_back(gripperStep("open_gripper"));
   return steps;

@@ -77,7 +77,7 @@ inline vrrw_skills::SkillInstruction armInstruction(const std::string& name, con
   const auto motion = move(from, to, seconds);
   std::vector<vrrw_dmp::CartesianSample> path;
   for (const auto& point : motion.points)
-    path.push_back({ point.time, poseOf(point.positions), {}, {} });
+    path.push_back({ point.time, poseOf(point.positions), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero() });
   vrrw_dmp::DmpProvenance provenance;
   provenance.source = "test " + name;
   provenance.created = "2026-01-01T00:00:00Z";

@@ -167,6 +167,38 @@ TEST(SkillPlan, CollisionsAreRefusedExceptTheFingersAtTheGraspAndTheObjectOnItsS
   EXPECT_EQ(carried.rfind("final: collision on the way: box would touch bin at ", 0), 0u) << carried;
 }
 
+TEST(SkillPlan, AJointRolloutThatCollidesFollowsTheCartesianDmpInstead)
+{
+  const auto skill = vrrw_skills_test::pickAndPlace();
+  vrrw_skills_test::ToyArm arm;
+  SkillPlanner planner(skill, arm);
+  planner.approach(sceneWith(skill, skill.object_start));
+  auto scene = sceneWith(skill, skill.object_start);
+  scene.joints = jointsOf(vrrw_skills_test::pose(0.4, 0.1, 0.95));
+  // the held box passes the bin only on the joint rollouts (no IK between their goals; carry() solves one, the
+  // place's goal again): the Cartesian path, an IK per 50 ms, stands for the path that keeps its height
+  const int solved = arm.ik_calls + 1;
+  arm.touches = [&arm, solved](const std::vector<double>& q) {
+    return arm.ik_calls <= solved && q[1] < 0.0 && q[1] > -0.1 ? ContactPair{ "box", "bin" } : ContactPair{};
+  };
+  const auto carry = planner.carry(scene, skill.object_in_hand);
+  ASSERT_EQ(carry.size(), 3u);
+  EXPECT_FALSE(carry[0].cartesian);  // back_to_near_pick never comes near the bin
+  EXPECT_TRUE(carry[1].cartesian);
+  EXPECT_GT(arm.ik_calls, solved + 20);
+  EXPECT_EQ(carry[1].trajectory.points.front().positions, planner.goals().at("back_to_near_pick"));
+  EXPECT_EQ(carry[1].trajectory.points.back().positions, planner.goals().at("final"));
+  // in the way of both: refused, with both reasons
+  arm.touches = [](const std::vector<double>& q) {
+    return q[1] < 0.0 && q[1] > -0.1 ? ContactPair{ "box", "bin" } : ContactPair{};
+  };
+  const std::string both = refusalOf([&] { planner.carry(scene, skill.object_in_hand); });
+  EXPECT_EQ(both.rfind("final: collision on the way: box would touch bin at ", 0), 0u) << both;
+  EXPECT_NE(both.find(" (along the Cartesian DMP too: collision on the way: box would touch bin at "),
+            std::string::npos)
+      << both;
+}
+
 TEST(SkillPlan, AMotionOverTheLimitsIsSlowedDownAsAWhole)
 {
   const auto skill = vrrw_skills_test::pickAndPlace();

@@ -58,6 +58,7 @@ struct PlannedStep
   std::string instruction;
   bool gripper = false;
   vrrw_trajectory::JointTrajectory trajectory;  ///< arm: times from 0, positions and velocities
+  bool cartesian = false;  ///< arm: the Cartesian DMP followed by IK (another arm, or the joint rollout collided)
   double gripper_position = 0.0;
   double gripper_effort = 0.0;
 };
@@ -69,7 +70,9 @@ std::map<std::string, CartesianPose> goalPoses(const Skill& skill, const SkillSc
 /// \brief Plans a skill's run on one arm: every instruction's goal from the keyframes and where things are
 /// now, IK per arm (seeded with the taught joints on the taught arm, else with the previous goal), the taught
 /// arm's joint DMPs rolled out between those goals, or for another arm the Cartesian DMPs rolled out between
-/// the TCP goals and followed by IK, each piece checked for collisions state by state. A run is planned in two
+/// the TCP goals and followed by IK, each piece checked for collisions state by state. A joint rollout that
+/// collides is planned again along the Cartesian DMP (a joint rollout to moved goals bends the TCP's path, the
+/// Cartesian one keeps its shape: the height a carry keeps above the table). A run is planned in two
 /// parts: approach() up to the closed gripper, then, with the object held and attached in the planning scene,
 /// carry() from where the arm and the object are then. Throws SkillRefusal naming the instruction and why
 /// (no IK: out of reach or in collision; a collision on the way; a joint jump).
@@ -104,6 +107,7 @@ private:
   vrrw_trajectory::JointTrajectory cartesianMotion(const SkillInstruction& instruction, const SkillScene& scene,
                                                    const std::vector<double>& start, const std::vector<double>& goal);
   void checkPiece(const std::string& instruction, const vrrw_trajectory::JointTrajectory& motion);
+  PlannedStep armStep(const std::string& name, const SkillScene& scene, const std::vector<double>& from);
   PlannedStep gripperStep(const std::string& name) const;
 
   const Skill& skill_;

@@ -65,7 +65,8 @@ void SkillRunner::execute(const std::vector<PlannedStep>& steps, RunReport& repo
     else
     {
       progress(step.instruction + ": " + format("%.2f s of motion, %.0f points", step.trajectory.duration(),
-                                                double(step.trajectory.points.size())));
+                                                double(step.trajectory.points.size())) +
+               (step.cartesian ? " (the Cartesian DMP by IK)" : ""));
       arm_.execute(step.instruction, step.trajectory);
     }
     report.instruction_seconds.push_back({ step.instruction, (ros::Time::now() - start).toSec() });
