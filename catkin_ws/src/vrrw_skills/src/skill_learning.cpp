@@ -419,9 +419,12 @@ Skill learnSkill(const std::vector<Demonstration>& demos, const LearnOptions& op
     starts.push_back(demo.object_start);
     ends.push_back(demo.object_end);
     places.push_back(demo.place_start);
+    // where the object came to rest, in the frame of the TCP that let it go: a drill that swung in the grip
+    // during a quick carry was released tilted 7 deg on one edge and fell flat (its pose when the gripper
+    // opened made every run tilt the drill as much, and it toppled)
     const Segment& open = demo.segments.at("open_gripper");
-    in_hand.push_back(relativeTo(toPose(demo.tcp->at(vrrw_demos::stateAt(*demo.track, open.start))),
-                                 objectPose(*demo.demo, options.object, open.start)));
+    const CartesianPose releasing = toPose(demo.tcp->at(vrrw_demos::stateAt(*demo.track, open.start)));
+    in_hand.push_back(relativeTo(releasing, demo.object_end));
     SkillSource source;
     source.bag = demo.demo->source;
     source.scene = demo.demo->metadata.scene;

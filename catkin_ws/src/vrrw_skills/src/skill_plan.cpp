@@ -107,7 +107,7 @@ std::map<std::string, CartesianPose> goalPoses(const Skill& skill, const SkillSc
     }
     if (instruction->name == "final")
     {
-      // where the demonstration released the object, reached with the object held as it is now
+      // where the object came to rest in the demonstration, reached with the object held as it is now
       const CartesianPose released = inWorld(world, skill.object_in_hand);
       world = inWorld(released, toPose(toIsometry(object_in_hand).inverse()));
     }

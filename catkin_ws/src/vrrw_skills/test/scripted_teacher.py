@@ -136,8 +136,10 @@ class Teacher:
         tcp, _ = self.frame(self.args.robot + '_tcp')
         grab = tuple(f - t for f, t in zip(flange, tcp))
         at = lambda point: tuple(p + g for p, g in zip(point, grab))  # noqa: E731
-        t0 = rospy.Time.now().to_sec()
         self.hold_hand(at(start), orientation, 1.0, 'grab', 10.0)
+        # the action is the pull: a grab moves nothing (the spring takes the wrist where it is), and how long the
+        # interaction node takes to report it is the machine's load (0.2-0.4 s measured), not the teacher's doing
+        t0 = rospy.Time.now().to_sec()
         steps = int(seconds * 100)
         for k in range(steps + 1):
             s = k / steps

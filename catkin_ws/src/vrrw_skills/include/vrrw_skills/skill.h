@@ -90,7 +90,8 @@ struct Skill
   CartesianPose object_start;  ///< the object in the world at the start of the demonstration
   CartesianPose object_end;    ///< where it was left, world
   CartesianPose place_start;   ///< place_on's pose at the start (world), when place_on is set
-  /// the object's pose in the TCP frame when the gripper opened: with where it is held now, the place goal
+  /// where the object came to rest (object_end) in the frame of the TCP when the gripper opened: with where it
+  /// is held now, the place goal
   CartesianPose object_in_hand;
   std::vector<SkillInstruction> instructions;
   std::vector<SkillSource> sources;

@@ -86,7 +86,7 @@ public:
   /// \brief Every goal by IK with the demonstrated hold (refuses an unreachable pose before anything moves),
   /// then near_pick, pick and close_gripper.
   std::vector<PlannedStep> approach(const SkillScene& scene);
-  /// \brief back_to_near_pick, final (its goal puts the object where the demonstration released it, from how
+  /// \brief back_to_near_pick, final (its goal puts the object where it came to rest in the demonstration, from how
   /// \a object_in_hand says it is held now) and open_gripper, from \a scene.joints.
   std::vector<PlannedStep> carry(const SkillScene& scene, const CartesianPose& object_in_hand);
   /// \brief The goals (joints) of the last plan, per instruction.
