@@ -1,9 +1,0 @@
-# generated from catkin/cmake/template/pkg.context.pc.in
-CATKIN_PACKAGE_PREFIX = ""
-PROJECT_PKG_CONFIG_INCLUDE_DIRS = "/work/wt/tools/catkin_ws/src/vrrw_common/include".split(';') if "/work/wt/tools/catkin_ws/src/vrrw_common/include" != "" else []
-PROJECT_CATKIN_DEPENDS = "roscpp;rospy".replace(';', ' ')
-PKG_CONFIG_LIBRARIES_WITH_PREFIX = "-lvrrw_common;-lvrrw_common_ros".split(';') if "-lvrrw_common;-lvrrw_common_ros" != "" else []
-PROJECT_NAME = "vrrw_common"
-PROJECT_SPACE_DIR = "/work/wt/tools/build_ninja/devel"
-PROJECT_VERSION = "0.1.0"
-PROJECT_LIB_DIR = "lib"

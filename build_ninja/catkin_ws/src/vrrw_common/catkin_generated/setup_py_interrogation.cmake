@@ -1,7 +1,0 @@
-set(vrrw_common_SETUP_PY_SETUP_MODULE "setuptools")
-set(vrrw_common_SETUP_PY_VERSION "0.1.0")
-set(vrrw_common_SETUP_PY_SCRIPTS "")
-set(vrrw_common_SETUP_PY_PACKAGES "vrrw_common")
-set(vrrw_common_SETUP_PY_PACKAGE_DIRS "python/vrrw_common")
-set(vrrw_common_SETUP_PY_MODULES "")
-set(vrrw_common_SETUP_PY_MODULE_DIRS "")

@@ -1,9 +1,0 @@
-# generated from catkin/cmake/template/pkg.context.pc.in
-CATKIN_PACKAGE_PREFIX = ""
-PROJECT_PKG_CONFIG_INCLUDE_DIRS = "".split(';') if "" != "" else []
-PROJECT_CATKIN_DEPENDS = "".replace(';', ' ')
-PKG_CONFIG_LIBRARIES_WITH_PREFIX = "".split(';') if "" != "" else []
-PROJECT_NAME = "vrrw_viz"
-PROJECT_SPACE_DIR = "/work/wt/tools/build_ninja/devel"
-PROJECT_VERSION = "0.1.0"
-PROJECT_LIB_DIR = "lib"

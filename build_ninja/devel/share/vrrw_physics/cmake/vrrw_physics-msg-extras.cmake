@@ -1,2 +1,0 @@
-set(vrrw_physics_MESSAGE_FILES "/work/wt/tools/catkin_ws/src/vrrw_physics/msg/Contact.msg;/work/wt/tools/catkin_ws/src/vrrw_physics/msg/Contacts.msg;/work/wt/tools/catkin_ws/src/vrrw_physics/msg/Hand.msg;/work/wt/tools/catkin_ws/src/vrrw_physics/msg/SpringTarget.msg")
-set(vrrw_physics_SERVICE_FILES "/work/wt/tools/catkin_ws/src/vrrw_physics/srv/SetMode.srv;/work/wt/tools/catkin_ws/src/vrrw_physics/srv/SetGains.srv;/work/wt/tools/catkin_ws/src/vrrw_physics/srv/SetSpring.srv;/work/wt/tools/catkin_ws/src/vrrw_physics/srv/SetObjectPose.srv")
