@@ -11,14 +11,12 @@
 #include <map>
 
 #include "bullet_conversions.h"
+#include "touching.h"
 
 namespace vrrw_physics
 {
 namespace
 {
-/// A contact point counts while its gap is within the collision margin or the solver pushed through it.
-constexpr double kTouchingGap = 0.001;  // m
-
 struct PairSum
 {
   double force = 0.0;
@@ -52,7 +50,7 @@ std::vector<ContactPair> PhysicsWorld::contacts() const
     for (int p = 0; p < manifold->getNumContacts(); ++p)
     {
       const btManifoldPoint& point = manifold->getContactPoint(p);
-      if (point.getDistance() > kTouchingGap && point.m_appliedImpulse <= 0)
+      if (!isTouching(point))
         continue;
       std::pair<std::string, std::string> key{ name(manifold->getBody0(), point.m_index0),
                                                name(manifold->getBody1(), point.m_index1) };

@@ -11,14 +11,12 @@
 #include <set>
 
 #include "bullet_conversions.h"
+#include "touching.h"
 
 namespace vrrw_physics
 {
 namespace
 {
-/// A contact point counts while its gap is within the collision margin or the solver pushed through it.
-constexpr double kTouchingGap = 0.001;  // m
-
 /// What a movable object touched in one step.
 struct Touches
 {
@@ -29,11 +27,8 @@ struct Touches
 bool touching(const btPersistentManifold& manifold)
 {
   for (int p = 0; p < manifold.getNumContacts(); ++p)
-  {
-    const btManifoldPoint& point = manifold.getContactPoint(p);
-    if (point.getDistance() <= kTouchingGap || point.m_appliedImpulse > 0)
+    if (isTouching(manifold.getContactPoint(p)))
       return true;
-  }
   return false;
 }
 }  // namespace

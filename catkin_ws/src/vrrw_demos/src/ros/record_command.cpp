@@ -64,7 +64,7 @@ std::string folderOf(const std::string& path)
   return slash == 0 ? "/" : path.substr(0, slash);
 }
 
-RecordRequest parseRequest(int argc, char** argv)
+RecordRequest parseRecordRequest(int argc, char** argv)
 {
   const vrrw_common::Options options(argc, argv, 2, { "out", "robots", "wait" }, { "check" });
   options.expectPositional({});
@@ -185,7 +185,7 @@ int stopRecording(vrrw_common::PersistentServices& services)
 
 int runRecord(int argc, char** argv, const std::atomic<bool>& interrupted)
 {
-  const RecordRequest request = parseRequest(argc, argv);
+  const RecordRequest request = parseRecordRequest(argc, argv);
   if (request.check_only)
     return 0;
   ros::init(argc, argv, "demo_record", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);

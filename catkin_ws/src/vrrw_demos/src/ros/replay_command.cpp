@@ -60,7 +60,7 @@ struct RunningRobot
   double gripper_lower = -1e9, gripper_upper = 1e9;
 };
 
-ReplayRequest parseRequest(int argc, char** argv)
+ReplayRequest parseReplayRequest(int argc, char** argv)
 {
   const vrrw_common::Options options(argc, argv, 2, { "mode", "robot", "segment", "speed", "tolerance" }, { "yes" });
   options.expectPositional({ "BAG" });
@@ -317,7 +317,7 @@ int replayAndMeasure(const PreparedReplay& r, RobotControllers& controllers, ros
 int runReplay(int argc, char** argv, const std::atomic<bool>& interrupted)
 {
   // Stage 1, before any contact with ROS: the request and the recording.
-  ReplayRequest request = parseRequest(argc, argv);
+  ReplayRequest request = parseReplayRequest(argc, argv);
   ReplayInput input = loadInput(request);
   ros::init(argc, argv, "demo_replay", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
   const std::string ns = "/" + input.track.robot + "/";

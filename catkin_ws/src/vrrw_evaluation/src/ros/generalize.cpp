@@ -17,15 +17,6 @@
 
 namespace vrrw_evaluation
 {
-namespace
-{
-void progress(const std::string& line)
-{
-  std::printf("demo: %s\n", line.c_str());
-  std::fflush(stdout);
-}
-}  // namespace
-
 vrrw_skills::Skill PickPlaceDemo::learnSkill(DemoReport& report)
 {
   vrrw_skills::LearnOptions learn;

@@ -17,14 +17,11 @@
 
 namespace vrrw_evaluation
 {
-namespace
-{
 void progress(const std::string& line)
 {
   std::printf("demo: %s\n", line.c_str());
   std::fflush(stdout);
 }
-}  // namespace
 
 PickPlaceDemo::PickPlaceDemo(ros::NodeHandle& node, WorkspaceClient& client, GhostOperator& ghost, HandOperator& hand,
                              const Cell& cell, DemoOptions options)

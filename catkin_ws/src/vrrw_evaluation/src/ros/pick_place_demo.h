@@ -19,6 +19,9 @@
 
 namespace vrrw_evaluation
 {
+/// One progress line of the demo, `demo: LINE`, flushed at once.
+void progress(const std::string& line);
+
 struct DemoOptions
 {
   int trials = 20;
