@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The one setup step of vrrw, used by ./vrrw setup, docker/Dockerfile and CI:
-# installs the Debian packages in docker/packages.txt and a venv holding xacro.
+# installs the Debian packages in docker/packages.txt and a venv holding xacro; `--tests` adds what only the
+# tests use (./vrrw test passes it), so the first `./vrrw demo` does not wait for it.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
@@ -24,7 +25,7 @@ if [ ! -x "$venv/bin/xacro" ]; then
   "$venv/bin/pip" install -q --disable-pip-version-check xacro==1.13.3
 fi
 # rosbags: an independent bag reader, used only by vrrw_demos' recorder test.
-if ! "$venv/bin/python" -c "import rosbags" 2>/dev/null; then
+if [ "${1:-}" = --tests ] && ! "$venv/bin/python" -c "import rosbags" 2>/dev/null; then
   echo "setup: installing rosbags into $venv (vrrw_demos' test reads bags with it)" >&2
   "$venv/bin/pip" install -q --disable-pip-version-check "rosbags==0.11.9"
 fi
