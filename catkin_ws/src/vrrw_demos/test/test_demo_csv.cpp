@@ -9,6 +9,7 @@
 #include <vrrw_demos/demo_csv.h>
 #include <vrrw_demos/demo_error.h>
 
+#include "file_text.h"
 #include "scripted_demo.h"
 
 using namespace vrrw_demos;
@@ -18,14 +19,6 @@ namespace
 std::string temporary(const std::string& name)
 {
   return "/tmp/vrrw_demos_csv_" + std::to_string(::getpid()) + "_" + name;
-}
-
-std::string slurp(const std::string& path)
-{
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 std::string errorOf(const std::string& text)

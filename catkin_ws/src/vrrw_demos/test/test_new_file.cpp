@@ -12,6 +12,8 @@
 #include <vrrw_demos/new_file.h>
 #include <vrrw_demos/run_program.h>
 
+#include "file_text.h"
+
 using namespace vrrw_demos;
 
 namespace
@@ -23,14 +25,6 @@ std::string folder()
     return std::string(::mkdtemp(name));
   }();
   return path;
-}
-
-std::string slurp(const std::string& path)
-{
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 std::string errorOf(const std::function<void()>& write)

@@ -25,6 +25,7 @@
 #include <vrrw_msgs/DemoStart.h>
 #include <vrrw_msgs/DemoStop.h>
 
+#include "file_text.h"
 #include "tool_process.h"
 
 using vrrw_demos_test::folder;
@@ -122,14 +123,6 @@ std::map<std::string, int> countPerTopic(const std::string& path)
   for (const rosbag::MessageInstance& m : rosbag::View(bag))
     ++counts[m.getTopic()];
   return counts;
-}
-
-std::string slurp(const std::string& path)
-{
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 }  // namespace
 

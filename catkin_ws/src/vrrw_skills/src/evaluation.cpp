@@ -6,22 +6,12 @@
 
 #include <vrrw_skills/poses.h>
 
+#include "json_text.h"
+
 namespace vrrw_skills
 {
 namespace
 {
-std::string jsonString(const std::string& text)
-{
-  std::string out = "\"";
-  for (char c : text)
-  {
-    if (c == '"' || c == '\\')
-      out += '\\';
-    out += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
-  }
-  return out + "\"";
-}
-
 std::string number(double value, int digits = 6)
 {
   if (!std::isfinite(value))

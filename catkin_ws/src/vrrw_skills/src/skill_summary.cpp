@@ -6,6 +6,8 @@
 
 #include <vrrw_skills/poses.h>
 
+#include "json_text.h"
+
 namespace vrrw_skills
 {
 namespace
@@ -15,18 +17,6 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
   char text[256];
   std::snprintf(text, sizeof(text), pattern, a, b, c, d);
   return text;
-}
-
-std::string jsonString(const std::string& text)
-{
-  std::string out = "\"";
-  for (char c : text)
-  {
-    if (c == '"' || c == '\\')
-      out += '\\';
-    out += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
-  }
-  return out + "\"";
 }
 
 /// The DMPs' duration: the demonstration's motion with its pauses cut out.

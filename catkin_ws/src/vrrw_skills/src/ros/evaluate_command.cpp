@@ -33,7 +33,7 @@ namespace
 {
 std::atomic<bool> stopping{ false };
 
-void onInterrupt(int)
+void stopTrials(int)
 {
   stopping = true;
   WorkspaceArm::interrupt();
@@ -169,8 +169,8 @@ int evaluateCommand(int argc, char** argv)
   if (error)
     throw SkillError("--out " + out + ": cannot be created (" + error.message() + ")");
 
-  std::signal(SIGINT, onInterrupt);
-  std::signal(SIGTERM, onInterrupt);
+  std::signal(SIGINT, stopTrials);
+  std::signal(SIGTERM, stopTrials);
   std::cout << "skill evaluate: bringing up " << report.scene << " in physics (log " << out << "/workspace.log)"
             << std::endl;
   WorkspaceProcess workspace(report.scene, out + "/workspace.log", port);

@@ -16,7 +16,7 @@ namespace vrrw_skills
 {
 namespace
 {
-void onInterrupt(int)
+void interruptArm(int)
 {
   WorkspaceArm::interrupt();
 }
@@ -48,8 +48,8 @@ int runCommand(int argc, char** argv)
                                 { ns + "arm_controller/follow_joint_trajectory",
                                   ns + "gripper_controller/gripper_cmd" },
                                 { ns + "compute_ik", ns + "check_state", ns + "compute_fk", ns + "attach_object" } });
-  std::signal(SIGINT, onInterrupt);
-  std::signal(SIGTERM, onInterrupt);
+  std::signal(SIGINT, interruptArm);
+  std::signal(SIGTERM, interruptArm);
   ros::NodeHandle node;
   ros::AsyncSpinner spinner(2);
   spinner.start();
