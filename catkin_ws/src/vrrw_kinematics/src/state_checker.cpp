@@ -5,18 +5,12 @@
 #include <map>
 
 #include "vrrw_kinematics/kinematics_error.h"
+#include "world_box.h"
 
 namespace vrrw_kinematics
 {
 namespace
 {
-bool aabbOverlap(const Eigen::Vector3d& ca, const Eigen::Vector3d& ha, const Eigen::Vector3d& cb,
-                 const Eigen::Vector3d& hb)
-{
-  return std::abs(ca.x() - cb.x()) <= ha.x() + hb.x() && std::abs(ca.y() - cb.y()) <= ha.y() + hb.y() &&
-         std::abs(ca.z() - cb.z()) <= ha.z() + hb.z();
-}
-
 bool sphereTouchesBox(const Eigen::Vector3d& center, double radius, const Eigen::Vector3d& box_center,
                       const Eigen::Vector3d& box_half)
 {
