@@ -1,6 +1,8 @@
 """./vrrw's options: every mistake is one line naming the option, exit 2, checked before anything is
 started, written or deleted; tools that need a workspace say so within seconds when none runs."""
+import glob
 import os
+import re
 import socket
 import subprocess
 import sys
@@ -101,6 +103,53 @@ class Refusals(unittest.TestCase):
         self.assertEqual(run_demo.parse_args(['--launch', 'x']).trials, 20)
 
 
+class Documented(unittest.TestCase):
+    """Every command ./vrrw runs and every benchmark there is, is in ./vrrw --help and in the README's Commands table."""
+
+    @classmethod
+    def setUpClass(cls):
+        with open(VRRW) as f:
+            dispatch = re.search(r'^  (setup \|[^)]*)\) "cmd_', f.read(), re.M).group(1)
+        cls.commands = [c.strip() for c in dispatch.split('|')]
+        cls.help = vrrw('--help').stdout
+        with open(os.path.join(ROOT, 'README.md')) as f:
+            readme = f.read()
+        cls.table = readme[readme.index('## Commands'):readme.index('## Layout')]
+        unknown = vrrw('bench', 'no_such_benchmark')  # names every benchmark there is
+        cls.benchmarks = sorted(re.fullmatch(r"vrrw: bench: no benchmark named 'no_such_benchmark' \(known: ([^)]*)\)\n",
+                                             unknown.stderr).group(1).split())
+
+    def test_every_command_in_help_and_readme(self):
+        self.assertIn('plan', self.commands)
+        for command in self.commands:
+            self.assertRegex(self.help, rf'\n  {command}\b', command)
+            self.assertIn(f'| `./vrrw {command}', self.table, command)
+
+    def test_every_benchmark_in_help_and_readme(self):
+        self.assertIn('interaction', self.benchmarks)
+        listed = re.search(r'run a benchmark \(([^)]*)\)', self.help).group(1).split()
+        self.assertEqual(sorted(listed), self.benchmarks)
+        in_readme = re.search(r'benchmarks \(`([^`]*)`', self.table).group(1).split()
+        self.assertEqual(sorted(in_readme), self.benchmarks)
+
+    def test_the_presets_the_readmes_name_exist_in_pick_place_drill(self):
+        import yaml
+        with open(os.path.join(ROOT, 'urdf', 'config', 'presets.yaml')) as f:
+            presets = set(yaml.safe_load(f)['ur5e'])
+        with open(os.path.join(ROOT, 'urdf', 'scenes', 'pick_place_drill.yaml')) as f:
+            presets |= set((yaml.safe_load(f).get('presets') or {}).get('ur5e', {}))
+        texts = [os.path.join(ROOT, 'README.md')] + glob.glob(os.path.join(ROOT, 'catkin_ws', 'src', '*', 'README.md'))
+        named = set()
+        for path in texts:
+            with open(path) as f:
+                text = f.read()
+            for groups in re.findall(r'preset "name: (\w+)"|--preset (\w+)|ghost at `?(\w+_\w+)', text):
+                named |= {name for name in groups if name}
+            for known in re.findall(r"unknown\s+preset\s+'\w+'\s+\(known:\s+([^)]*)\)", text):
+                self.assertEqual(set(known.replace(',', ' ').split()), presets, path)
+        self.assertIn('square_left', named)
+        self.assertLessEqual(named - {'NAME'}, presets)
+
 class WithoutWorkspace(unittest.TestCase):
     """No master at ROS_MASTER_URI: one line within the check's 2 s, exit 1 (roscpp would retry forever)."""
 
@@ -118,6 +167,13 @@ class WithoutWorkspace(unittest.TestCase):
 
     def test_move(self):
         self.check('move', 'ur5e', '--joints', '0,-1.57,1.57,-1.57,-1.57,0', line_start='vrrw_arm: ')
+
+    def test_plan(self):
+        self.check('plan', 'ur5e', '--preset', 'square_left', line_start='vrrw_plan: ')
+
+    def test_skill_run(self):
+        skill = os.path.join(ROOT, 'catkin_ws', 'src', 'vrrw_skills', 'test', 'data', 'box_skill.yaml')
+        self.check('skill', 'run', skill, line_start='skill run: ')
 
     def test_record_running(self):
         self.check('record', 'running', '--out', os.path.join(tempfile.mkdtemp(), 'a|b.bag'),

@@ -1,7 +1,10 @@
-"""./vrrw demo --quick as a user runs it: within 2 minutes, with the issue's numbers in metrics.json;
-and the bad inputs (unknown scene, a scene without a graspable object) as one clear line."""
+"""./vrrw demo --quick as a user runs it: within 2 minutes, with the issue's numbers in metrics.json; the
+README's DMP example on its demonstration.bag as written there; and the bad inputs (unknown scene, a scene
+without a graspable object) as one clear line."""
 import json
 import os
+import re
+import shlex
 import subprocess
 import tempfile
 import time
@@ -110,6 +113,44 @@ class QuickDemoTest(unittest.TestCase):
             self.assertGreater(os.path.getsize(os.path.join(self.out, name)), 1000, name)
         self.assertEqual(len([f for f in os.listdir(os.path.join(self.out, 'frames')) if f.endswith('.png')]), 18)
         self.assertFalse(os.path.exists('PWNED'))  # the folder's name was never shell text
+
+    def dmp(self, command):
+        """A `./vrrw dmp` command line of the README, run on this test's report folder (no shell)."""
+        words = [w.replace('demo_report/', self.out + '/') for w in shlex.split(command)]
+        words = [os.path.join(self.out, w) if w.endswith(('.yaml', '.csv')) else w for w in words]  # beside it
+        return subprocess.run([VRRW, *words[1:]], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                              timeout=120)
+
+    def test_the_readmes_dmp_example_runs_without_warnings(self):
+        with open(os.path.join(ROOT, 'README.md')) as f:
+            readme = f.read()
+        block = re.search(r'becomes Dynamic Movement Primitives.*?```bash\n(.*?)```', readme, re.S).group(1)
+        commands = [line.split('  #')[0].strip() for line in block.splitlines() if line.startswith('./vrrw dmp ')]
+        self.assertEqual([c.split()[2] for c in commands], ['learn', 'rollout', 'plot'])
+        for command in commands[:2]:
+            result = self.dmp(command)
+            print(result.stdout, result.stderr)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertNotIn('warning', result.stderr)
+            self.assertNotIn('advice:', result.stdout)  # one instruction: the fit needs no advice
+        with open(os.path.join(self.out, 'final.yaml')) as f:
+            source = yaml.safe_load(f)['provenance']['source']
+        self.assertRegex(source, '^' + re.escape(os.path.join(self.out, 'demonstration.bag')) +
+                         r' robot ur5e segment final \d+\.\d{3}-\d+\.\d{3} s$')
+
+    def test_learning_a_whole_demonstration_says_what_would_fit(self):
+        # 20 basis functions for five motions with rests between them (the default 50 fits within 0.0106 rad,
+        # at the advice's threshold of 0.01)
+        result = self.dmp('./vrrw dmp learn --demo demo_report/demonstration.bag --robot ur5e --basis 20 '
+                          '--out whole.yaml')
+        self.assertEqual(result.returncode, 0, result.stderr)
+        print(result.stdout)
+        fit = float(re.search(r'reproduction RMSE ([0-9.e-]+) rad', result.stdout).group(1))
+        self.assertGreater(fit, 0.02)  # 0.040-0.053 rad measured on three demonstrations
+        self.assertLess(fit, 0.15)
+        advice = [line for line in result.stdout.splitlines() if line.startswith('advice: ')]
+        self.assertIn('with --segment NAME (this bag has near_pick pick close_gripper', advice[0])
+        self.assertRegex(advice[-1], r'^advice: (--basis \d+ reproduces it within|no basis count up to 1000)')
 
 
 class BadSceneTest(unittest.TestCase):

@@ -41,10 +41,10 @@ int main(int argc, char** argv)
     std::cerr << "skill: unknown command '" << command << "'\n" << kUsage;
     return 2;
   }
-  catch (const vrrw_common::WorkspaceError& e)
+  catch (const vrrw_common::WorkspaceError& e)  // no workspace runs: a failure to run, as in every tool
   {
     std::cerr << "skill " << command << ": " << e.what() << "\n";
-    return 2;
+    return 1;
   }
   catch (const vrrw_common::OptionError& e)
   {

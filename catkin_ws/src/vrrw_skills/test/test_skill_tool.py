@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """`./vrrw skill` refusing bad input as a user meets it, without a workspace: each is one line naming the file,
-field or option and the reason, exit 2, nothing written, nothing started. About 20 seconds."""
+field or option and the reason, exit 2 (exit 1 for no workspace), nothing written, nothing started. About 20 seconds."""
 import os
 import shutil
 import socket
@@ -90,7 +90,7 @@ class SkillToolBadInput(unittest.TestCase):
         self.assertFalse(os.path.exists(out))
 
     def test_run_without_a_workspace_says_so_quickly(self):
-        seconds = self.refuse(['run', self.skill], 'no workspace at ', exit_code=2)
+        seconds = self.refuse(['run', self.skill], 'no workspace at ', exit_code=1)
         self.assertLess(seconds, 10.0)  # the check itself answers within 2 s; the tool's start is the rest
 
 

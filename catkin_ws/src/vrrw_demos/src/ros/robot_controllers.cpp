@@ -105,12 +105,16 @@ bool RobotControllers::waitUntilAt(const std::vector<std::string>& joints, const
 
 bool RobotControllers::pause(double seconds)
 {
-  const ros::Time until = ros::Time::now() + ros::Duration(seconds);
+  ros::Time until = ros::Time::now() + ros::Duration(seconds);
   while (!cancelled())
   {
     const ros::Time now = ros::Time::now();
     if (now >= until)
       return true;
+    // /physics/reset puts the simulated clock back to 0, often after `until` was taken from the old time: the
+    // pause then counts from the new time (else it waited as long as the simulation had run, 64 s seen)
+    if (now < last_clock_)
+      until = now + ros::Duration(seconds);
     if (now != last_clock_)
     {
       last_clock_ = now;
