@@ -5,7 +5,7 @@
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
 #include <vrrw_control/fake_robot.h>
-#include <vrrw_control/robot_controllers.h>
+#include <vrrw_control/ros/robot_controllers.h>
 
 namespace vrrw_control
 {

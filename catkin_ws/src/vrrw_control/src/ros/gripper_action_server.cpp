@@ -1,4 +1,4 @@
-#include <vrrw_control/gripper_action_server.h>
+#include <vrrw_control/ros/gripper_action_server.h>
 
 namespace vrrw_control
 {

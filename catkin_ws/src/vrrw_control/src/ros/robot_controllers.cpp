@@ -1,7 +1,7 @@
 #include <cmath>
 #include <std_msgs/Bool.h>
-#include <vrrw_control/robot_controllers.h>
-#include <vrrw_control/ros_drive_link.h>
+#include <vrrw_control/ros/robot_controllers.h>
+#include <vrrw_control/ros/ros_drive_link.h>
 
 namespace vrrw_control
 {

@@ -1,5 +1,5 @@
 #include <urdf_parser/urdf_parser.h>
-#include <vrrw_control/robot_description.h>
+#include <vrrw_control/ros/robot_description.h>
 #include <vrrw_scene/robot_config.h>
 #include <vrrw_scene/scene_loader.h>
 

@@ -1,5 +1,5 @@
-#include <vrrw_control/arm_action_server.h>
-#include <vrrw_control/msg_conversions.h>
+#include <vrrw_control/ros/arm_action_server.h>
+#include <vrrw_control/ros/msg_conversions.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
 namespace vrrw_control
