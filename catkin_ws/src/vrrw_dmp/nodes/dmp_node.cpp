@@ -12,7 +12,7 @@
 #include <vrrw_trajectory/csv.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
-#include "demo_source.h"
+#include "../src/ros/demo_source.h"
 
 namespace vrrw_dmp
 {

@@ -1,5 +1,7 @@
 #include <vrrw_demos/ros/demo_bag.h>
 
+#include <vrrw_common/joint_mapping.h>
+
 #include <algorithm>
 #include <regex>
 #include <set>
@@ -119,12 +121,6 @@ void jointsOf(RobotTrack& track, const BagMetadata& metadata, const sensor_msgs:
       track.gripper_joint = name;
 }
 
-double index(const sensor_msgs::JointState& state, const std::string& joint)
-{
-  const auto found = std::find(state.name.begin(), state.name.end(), joint);
-  return found == state.name.end() ? -1 : static_cast<double>(found - state.name.begin());
-}
-
 /// Central differences where the bag had no velocities (one-sided at the ends).
 void fillVelocities(RobotTrack& track, const std::vector<bool>& has_velocity)
 {
@@ -155,24 +151,19 @@ void readTrack(rosbag::Bag& bag, const std::string& path, const BagMetadata& met
       throw DemoError(path + ": " + topic + " has " + message.getDataType() + ", expected sensor_msgs/JointState");
     if (track.joint_names.empty())
       jointsOf(track, metadata, *state);
-    const double g = track.gripper_joint.empty() ? -1 : index(*state, track.gripper_joint);
-    if (g >= 0 && g < state->position.size())
-      gripper = state->position[static_cast<std::size_t>(g)];
+    if (!track.gripper_joint.empty())
+      if (const auto g = vrrw_common::findValues(state->name, state->position, { track.gripper_joint }))
+        gripper = g->front();
+    const auto positions = vrrw_common::findValues(state->name, state->position, track.joint_names);
+    if (!positions)
+      continue;  // another publisher's message (a gripper alone)
     RobotState sample;
     sample.time = (state->header.stamp.isZero() ? message.getTime() : state->header.stamp).toSec() - start;
     sample.gripper = gripper;
-    bool velocity = state->velocity.size() == state->name.size();
-    for (const std::string& joint : track.joint_names)
-    {
-      const double j = index(*state, joint);
-      if (j < 0 || j >= state->position.size())
-        break;
-      sample.positions.push_back(state->position[static_cast<std::size_t>(j)]);
-      if (velocity)
-        sample.velocities.push_back(state->velocity[static_cast<std::size_t>(j)]);
-    }
-    if (sample.positions.size() != track.joint_names.size())
-      continue;  // another publisher's message (a gripper alone)
+    sample.positions = *positions;
+    const bool velocity = state->velocity.size() == state->name.size();
+    if (velocity)
+      sample.velocities = *vrrw_common::findValues(state->name, state->velocity, track.joint_names);
     if (!track.states.empty() && !(sample.time > track.states.back().time))
       continue;  // a repeated stamp: the same state published twice
     has_velocity.push_back(velocity);
