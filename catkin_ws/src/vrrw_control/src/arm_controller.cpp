@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <vrrw_control/control_error.h>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -12,13 +13,13 @@ ArmController::ArmController(RobotHardware& hardware, const std::vector<std::str
   : hw_(hardware), joints_(joints), validator_(std::move(validator)), options_(std::move(options))
 {
   if (options_.stop_deceleration.size() != joints_.size())
-    throw std::invalid_argument("arm: " + std::to_string(options_.stop_deceleration.size()) +
+    throw ControlError("arm: " + std::to_string(options_.stop_deceleration.size()) +
                                 " stop decelerations for " + std::to_string(joints_.size()) + " joints");
   for (const auto& j : joints_)
   {
     index_.push_back(hw_.index(j));
     if (index_.back() < 0)
-      throw std::invalid_argument("arm joint " + j + ": not a joint of the robot hardware");
+      throw ControlError("arm joint " + j + ": not a joint of the robot hardware");
   }
   holdCommand();
 }

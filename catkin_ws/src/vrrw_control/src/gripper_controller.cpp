@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <vrrw_control/control_error.h>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -10,7 +11,7 @@ GripperController::GripperController(RobotHardware& hardware, const std::string&
   : hw_(hardware), joint_(joint), index_(hardware.index(joint)), options_(options)
 {
   if (index_ < 0)
-    throw std::invalid_argument("gripper joint " + joint + ": not a joint of the robot hardware");
+    throw ControlError("gripper joint " + joint + ": not a joint of the robot hardware");
   hold_ = hw_.command().positions[index_];
 }
 

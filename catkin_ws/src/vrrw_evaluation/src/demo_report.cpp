@@ -1,4 +1,5 @@
 #include <vrrw_evaluation/demo_report.h>
+#include <vrrw_evaluation/evaluation_error.h>
 
 #include <cmath>
 #include <cstdio>
@@ -231,7 +232,7 @@ void writeReport(const DemoReport& report, const std::string& directory)
     std::ofstream out(path);
     out << text;
     if (!out.good())
-      throw std::runtime_error(path + ": cannot write");
+      throw EvaluationError(path + ": cannot write");
   }
 }
 }  // namespace vrrw_evaluation
