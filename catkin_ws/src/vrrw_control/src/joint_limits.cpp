@@ -1,6 +1,5 @@
-#include <stdexcept>
-#include <vrrw_control/control_error.h>
 #include <urdf_parser/urdf_parser.h>
+#include <vrrw_control/control_error.h>
 #include <vrrw_control/joint_limits.h>
 
 namespace vrrw_control

@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <vrrw_control/control_error.h>
-#include <stdexcept>
 #include <vrrw_control/trajectory_interpolator.h>
 
 namespace vrrw_control

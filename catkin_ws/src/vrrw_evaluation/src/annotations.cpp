@@ -1,7 +1,6 @@
 #include <vrrw_evaluation/annotations.h>
 #include <vrrw_evaluation/evaluation_error.h>
 
-#include <stdexcept>
 
 #include <vrrw_evaluation/pick_place_task.h>
 

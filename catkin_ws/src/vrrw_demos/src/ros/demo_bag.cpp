@@ -98,6 +98,7 @@ BagMetadata metadataOf(rosbag::Bag& bag, const std::string& path)
   return {};
 }
 
+/// A bag without metadata (another recorder's) names no gripper joint: the grippers vrrw ships name theirs so.
 bool looksLikeGripper(const std::string& joint)
 {
   return joint.find("finger") != std::string::npos || joint.find("gripper") != std::string::npos;
@@ -197,7 +198,10 @@ Demonstration readDemonstration(const std::string& path, const std::vector<std::
   demo.metadata = metadataOf(bag, path);
   const BagMetadata& metadata = demo.metadata;
   rosbag::View all(bag);
+  // time 0 of every track, event and pose: the recorder's start, or the bag's first message without metadata
   demo.start_stamp = metadata.start_stamp > 0 ? metadata.start_stamp : all.getBeginTime().toSec();
+
+  // The robots: every /<robot>/joint_states in the bag (or those asked for), each read into its track.
 
   std::set<std::string> found;
   const std::regex states("/([^/]+)/joint_states");
@@ -221,12 +225,14 @@ Demonstration readDemonstration(const std::string& path, const std::vector<std::
     readTrack(bag, path, metadata, demo.start_stamp, demo.robots.back());
   }
 
+  // The operator's and the annotations' events, at their own stamps (the receipt time when unstamped).
   rosbag::View events(bag, rosbag::TopicQuery(std::vector<std::string>{ "/operator/events", "/demos/events" }));
   for (const rosbag::MessageInstance& message : events)
     if (const auto event = message.instantiate<vrrw_msgs::Event>())
       demo.events.push_back({ (event->header.stamp.isZero() ? message.getTime() : event->header.stamp).toSec() -
                                   demo.start_stamp, event->robot, event->kind, event->detail });
 
+  // The objects' poses from the recorded tf: the metadata's objects, or (no metadata) every frame under world.
   const std::set<std::string> objects(metadata.objects.begin(), metadata.objects.end());
   rosbag::View tf(bag, rosbag::TopicQuery(std::vector<std::string>{ "/tf", "/tf_static" }));
   for (const rosbag::MessageInstance& message : tf)

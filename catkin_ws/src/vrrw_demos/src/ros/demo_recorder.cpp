@@ -28,7 +28,8 @@ std::string readText(const std::string& path)
 std::string vrrwVersion()
 {
   std::string version;
-  vrrw_common::runProgram({ "git", "-C", vrrw_scene::vrrwRoot(), "describe", "--always", "--dirty", "--tags" }, &version, true);
+  vrrw_common::runProgram({ "git", "-C", vrrw_scene::vrrwRoot(), "describe", "--always", "--dirty", "--tags" },
+                          &version, true);
   while (!version.empty() && (version.back() == '\n' || version.back() == ' '))
     version.pop_back();
   return version.empty() ? "unknown" : version;
