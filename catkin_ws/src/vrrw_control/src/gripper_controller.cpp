@@ -1,8 +1,7 @@
 #include <algorithm>
-#include <vrrw_control/control_error.h>
 #include <cmath>
 #include <sstream>
-#include <stdexcept>
+#include <vrrw_control/control_error.h>
 #include <vrrw_control/gripper_controller.h>
 
 namespace vrrw_control
