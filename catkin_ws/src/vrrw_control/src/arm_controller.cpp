@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <stdexcept>
 #include <vrrw_control/arm_controller.h>
+#include <vrrw_control/control_error.h>
 #include <vrrw_control/stop_trajectory.h>
 
 namespace vrrw_control
@@ -12,13 +12,13 @@ ArmController::ArmController(RobotHardware& hardware, const std::vector<std::str
   : hw_(hardware), joints_(joints), validator_(std::move(validator)), options_(std::move(options))
 {
   if (options_.stop_deceleration.size() != joints_.size())
-    throw std::invalid_argument("arm: " + std::to_string(options_.stop_deceleration.size()) +
+    throw ControlError("arm: " + std::to_string(options_.stop_deceleration.size()) +
                                 " stop decelerations for " + std::to_string(joints_.size()) + " joints");
   for (const auto& j : joints_)
   {
     index_.push_back(hw_.index(j));
     if (index_.back() < 0)
-      throw std::invalid_argument("arm joint " + j + ": not a joint of the robot hardware");
+      throw ControlError("arm joint " + j + ": not a joint of the robot hardware");
   }
   holdCommand();
 }
@@ -30,6 +30,8 @@ void ArmController::holdCommand()
     hold_.positions[j] = hw_.command().positions[index_[j]];
 }
 
+// motions_ is ordered by start: the latest motion that has started is the one commanded (a splice or a stop
+// replaces the rest of the one before it from its own start on).
 JointSample ArmController::desiredAt(double time) const
 {
   for (auto m = motions_.rbegin(); m != motions_.rend(); ++m)
@@ -83,6 +85,8 @@ ArmController::Plan ArmController::plan(const vrrw_trajectory::JointTrajectory& 
                                         double now) const
 {
   Plan p;
+  // Splicing: the goal joins the desired motion at its start. Strict: the arm first stops with bounded
+  // deceleration and the goal is validated from the rest state it stops in.
   if (options_.splice)
   {
     p.start = std::max(start_time, now);
@@ -162,6 +166,8 @@ std::string fixHint(const std::string& tolerance)
 }
 }  // namespace
 
+// During the trajectory (t up to its end) the path tolerances apply; after it the goal tolerances, which may
+// take until goal_time past the end to be met before the goal fails.
 void ArmController::checkTolerances(double t, Cycle& cycle)
 {
   const auto& tol = tolerances_;
@@ -195,6 +201,8 @@ ArmController::Cycle ArmController::update(double time)
   if (!started_)
     holdCommand();
   started_ = true;
+  // Stages of a cycle: drop motions the next one replaced; hold the end of a finished motion (or, following a
+  // measured arm, where it is); desired, actual and error; the goal's tolerances; the command written.
   while (motions_.size() > 1 && motions_[1].start <= time)
     motions_.erase(motions_.begin());
   if (!goal_ && motions_.size() == 1 && time >= motions_.front().end())

@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <stdexcept>
+#include <vrrw_control/control_error.h>
 #include <vrrw_control/gripper_controller.h>
 
 namespace vrrw_control
@@ -10,7 +10,7 @@ GripperController::GripperController(RobotHardware& hardware, const std::string&
   : hw_(hardware), joint_(joint), index_(hardware.index(joint)), options_(options)
 {
   if (index_ < 0)
-    throw std::invalid_argument("gripper joint " + joint + ": not a joint of the robot hardware");
+    throw ControlError("gripper joint " + joint + ": not a joint of the robot hardware");
   hold_ = hw_.command().positions[index_];
 }
 
@@ -45,6 +45,7 @@ void GripperController::start(double position, double now, double max_effort)
   a.velocities = { 0.0 };
   b.positions = { position };
   b.velocities = { 0.0 };
+  // a cubic from rest to rest peaks at 1.5 times its mean velocity: this duration keeps that peak at the limit
   b.time = std::max(options_.min_duration, 1.5 * std::abs(position - from) / options_.max_velocity);
   move.points = { a, b };
   motion_ = std::make_unique<TrajectoryInterpolator>(move);
@@ -87,6 +88,8 @@ GripperController::Cycle GripperController::update(double time)
   c.goal_active = true;
   const double end = start_time_ + motion_->endTime();
   c.reached_goal = time >= end && std::abs(c.position - target_) <= options_.goal_tolerance;
+  // A stall: the fingers moved less than stall_velocity * stall_time over the last stall_time, short of the
+  // target (an object between them). The window restarts whenever they move more.
   if (std::abs(c.position - window_position_) > options_.stall_velocity * options_.stall_time)
   {
     window_position_ = c.position;
@@ -100,7 +103,7 @@ GripperController::Cycle GripperController::update(double time)
     c.done = true;
     c.goal_active = false;
     active_ = false;
-    hold_ = target_;
+    hold_ = target_;  // a stalled gripper keeps commanding the target: it squeezes at its effort limit
     motion_.reset();
   }
   return c;

@@ -1,5 +1,5 @@
-#include <stdexcept>
 #include <urdf_parser/urdf_parser.h>
+#include <vrrw_control/control_error.h>
 #include <vrrw_control/joint_limits.h>
 
 namespace vrrw_control
@@ -9,13 +9,13 @@ std::vector<JointLimits> loadJointLimits(const std::string& urdf_xml, const std:
 {
   const auto model = urdf::parseURDF(urdf_xml);
   if (!model)
-    throw std::runtime_error("robot_description: not a valid URDF");
+    throw ControlError("robot_description: not a valid URDF");
   std::vector<JointLimits> result;
   for (const auto& name : joints)
   {
     const auto joint = model->getJoint(name);
     if (!joint)
-      throw std::runtime_error("robot_description: joint " + name + ": not in the URDF");
+      throw ControlError("robot_description: joint " + name + ": not in the URDF");
     JointLimits l;
     l.name = name;
     if (joint->limits)

@@ -1,5 +1,5 @@
 #include <algorithm>
-#include <stdexcept>
+#include <vrrw_control/control_error.h>
 #include <vrrw_control/trajectory_interpolator.h>
 
 namespace vrrw_control
@@ -25,7 +25,7 @@ TrajectoryInterpolator::TrajectoryInterpolator(const vrrw_trajectory::JointTraje
   : trajectory_(trajectory)
 {
   if (trajectory_.points.empty())
-    throw std::invalid_argument("trajectory has no points");
+    throw ControlError("trajectory has no points");
   joints_ = trajectory_.points.front().positions.size();
   for (const auto& p : trajectory_.points)
     times_.push_back(p.time);

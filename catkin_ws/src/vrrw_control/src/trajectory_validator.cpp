@@ -140,6 +140,10 @@ bool TrajectoryValidator::checkPoints(const vrrw_trajectory::JointTrajectory& go
   return true;
 }
 
+// Points within the limits can still be joined by a spline that leaves them: the interpolant is sampled between
+// every two points (samples_per_segment) against the position limits and, with a slack, the velocity limits.
+// Rejections name the goal's own point (index_shift maps back from the executable's, which may have one
+// prepended).
 bool TrajectoryValidator::checkInterpolant(int index_shift, Validation& v) const
 {
   const auto& traj = v.executable;
@@ -160,6 +164,7 @@ bool TrajectoryValidator::checkInterpolant(int index_shift, Validation& v) const
           return reject(v, Validation::Error::InvalidGoal, goal_point, l.name,
                         "interpolated position " + fmt(q) + " before this point leaves limits [" +
                             fmt(l.min_position) + ", " + fmt(l.max_position) + "]");
+        // without velocities at both ends the interpolator moves linearly: its velocity is the chord's
         const bool linear = traj.points[i].velocities.empty() || traj.points[i - 1].velocities.empty();
         const double qd =
             linear ? (traj.points[i].positions[j] - traj.points[i - 1].positions[j]) / (t1 - t0) : x.velocities[j];
@@ -213,6 +218,7 @@ Validation TrajectoryValidator::validate(const vrrw_trajectory::JointTrajectory&
                " (start tolerance " + fmt(options_.start_tolerance) + ")");
     return v;
   }
+  // a first point later than 0 is reached from the current state at rest, as joint_trajectory_controller does
   const bool prepend = out.points.front().time > 0.0;
   if (prepend)
     out.points.insert(out.points.begin(), restAt(current.positions));
@@ -220,6 +226,9 @@ Validation TrajectoryValidator::validate(const vrrw_trajectory::JointTrajectory&
   return v;
 }
 
+// Which of a new goal's points the running motion has not passed yet at `elapsed` (time since the goal's
+// start): those before it are dropped and the splice segment leads into the first kept one. A resting arm that
+// the goal does not start at keeps every point (the splice is the whole approach).
 size_t TrajectoryValidator::firstKeptPoint(const std::vector<vrrw_trajectory::TrajectoryPoint>& points,
                                            const JointSample& current, double elapsed, bool& own_segment) const
 {
@@ -239,6 +248,9 @@ size_t TrajectoryValidator::firstKeptPoint(const std::vector<vrrw_trajectory::Tr
   return kept;
 }
 
+// Stages: check and reorder the goal; drop the points already passed; time the splice segment from the
+// current state into the first kept point (its own timing, or the shortest that keeps the limits); shift the
+// rest of the goal by the same amount; check the whole interpolant.
 Validation TrajectoryValidator::splice(const vrrw_trajectory::JointTrajectory& goal, const JointSample& current,
                                        double elapsed) const
 {

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <limits>
 #include "ros_test_helpers.h"
-#include <vrrw_control/msg_conversions.h>
+#include <vrrw_control/ros/msg_conversions.h>
 #include <vrrw_control/trajectory_interpolator.h>
 
 using namespace vrrw_control_test;

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <memory>
 #include "lockstep_client.h"
-#include <vrrw_control/msg_conversions.h>
+#include <vrrw_control/ros/msg_conversions.h>
 #include <vrrw_control/trajectory_interpolator.h>
 
 using namespace vrrw_control_test;

@@ -17,7 +17,7 @@
 #include <vrrw_demos/demo_csv.h>
 #include <vrrw_demos/demo_error.h>
 #include <vrrw_demos/new_file.h>
-#include <vrrw_demos/run_program.h>
+#include <vrrw_common/run_program.h>
 #include <vrrw_demos/segmentation.h>
 
 #include <vrrw_common/options.h>
@@ -135,8 +135,9 @@ int plotCommand(const Options& options)
   one.robots = { track };
   writeNewFile(segments, segmentReport(bag, one, SegmentationOptions{}).yaml);
   const std::string picture = temporaryBeside(out);
-  const int status = runProgram({ "/usr/bin/python3", VRRW_DEMOS_SCRIPTS "/plot_demo.py", "--csv", csv, "--segments",
-                                  segments, "--title", bag + " (" + track.robot + ")", "--out", picture });
+  const int status = vrrw_common::runProgram({ "/usr/bin/python3", VRRW_DEMOS_SCRIPTS "/plot_demo.py", "--csv", csv,
+                                               "--segments", segments, "--title", bag + " (" + track.robot + ")",
+                                               "--out", picture });
   std::remove(csv.c_str());
   std::remove(segments.c_str());
   ::rmdir(folder);

@@ -79,6 +79,9 @@ void checkRobotName(const std::string& robot)
     throw DemoError("robot: '" + robot + "' is not a robot's name (a letter, then letters, digits and _)");
 }
 
+// An import must be the robot's own: a scene prefixes every joint with its robot's name, so a CSV of another
+// robot (ur10e_shoulder_pan_joint for --robot ur5e) is refused rather than recorded under the wrong name; and
+// every value within the sanity bounds of demo_csv.h.
 void checkImported(const RobotTrack& track, const std::string& source)
 {
   const std::string prefix = track.robot + "_";

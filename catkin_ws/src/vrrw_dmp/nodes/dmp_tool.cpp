@@ -1,21 +1,18 @@
 // vrrw_dmp: learn a DMP from a demonstration CSV, roll it out to a new start/goal/tau, plot the result.
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 
 #include <vrrw_common/joint_mapping.h>
 #include <vrrw_common/options.h>
+#include <vrrw_common/run_program.h>
+#include <vrrw_dmp/demo_fit.h>
 #include <vrrw_dmp/dmp.h>
 #include <vrrw_dmp/dmp_error.h>
 #include <vrrw_dmp/dmp_yaml.h>
 #include <vrrw_trajectory/csv.h>
 
-#include "demo_source.h"
+#include "../src/ros/demo_source.h"
 
 namespace
 {
@@ -30,33 +27,6 @@ const char* const kUsage =
     "CSV: header 't,<joint>..,<joint>_vel..', rows t, q1..qn, qd1..qdn. Values starting with '-' work as\n"
     "--goal=-0.5,1.2 or --goal -0.5,1.2.\n";
 
-/// Largest RMSE over joints of the demonstration against the DMP rolled out as demonstrated,
-/// linearly interpolated at the demonstration's time stamps.
-double reproductionRmse(const vrrw_dmp::Dmp& dmp, const vrrw_trajectory::JointTrajectory& demo)
-{
-  vrrw_dmp::RolloutRequest request;
-  request.dt = std::min(0.002, dmp.demoDuration() / 100.0);
-  const auto rollout = dmp.rollout(request);
-  double worst = 0.0;
-  for (std::size_t j = 0; j < dmp.dofs(); ++j)
-  {
-    double sum = 0.0;
-    for (const auto& point : demo.points)
-    {
-      const double t = point.time - demo.points.front().time;
-      const auto k = std::min(static_cast<std::size_t>(t / request.dt), rollout.points.size() - 2);
-      const double u = (t - rollout.points[k].time) / request.dt;
-      const double q = (1.0 - u) * rollout.points[k].positions[j] + u * rollout.points[k + 1].positions[j];
-      sum += (q - point.positions[j]) * (q - point.positions[j]);
-    }
-    worst = std::max(worst, std::sqrt(sum / static_cast<double>(demo.points.size())));
-  }
-  return worst;
-}
-
-/// rad: a reproduction error above this gets advice (a segment, a basis count).
-constexpr double kGoodFit = 0.01;
-
 vrrw_dmp::DemoSource loadSource(const Options& options)
 {
   const std::string path = options.text("demo");
@@ -65,51 +35,6 @@ vrrw_dmp::DemoSource loadSource(const Options& options)
   if (options.has("robot") || options.has("segment"))
     throw OptionError("--robot and --segment need a recorded bag as --demo (FILE.bag), not " + path);
   return vrrw_dmp::csvSource(path);
-}
-
-std::string number(double value)
-{
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.3g", value);
-  return text;
-}
-
-/// What would reproduce a demonstration better than \a rmse: one motion at a time, or more basis functions.
-std::vector<std::string> fitAdvice(const vrrw_dmp::DemoSource& demo, const vrrw_dmp::DmpParameters& parameters,
-                                   double rmse)
-{
-  std::vector<std::string> advice;
-  if (rmse <= kGoodFit)
-    return advice;
-  if (demo.motions.size() > 1)
-  {
-    std::string starts;
-    for (const auto& motion : demo.motions)
-      starts += (starts.empty() ? "" : ", ") + number(motion.first);
-    std::string how = "cut it at the rests";
-    if (demo.from_bag && !demo.segments.empty())
-    {
-      how = "learn one instruction at a time with --segment NAME (this bag has";
-      for (const auto& name : demo.segments)
-        how += " " + name;
-      how += ")";
-    }
-    advice.push_back("the demonstration holds " + std::to_string(demo.motions.size()) +
-                     " motions with rests between them (starting at " + starts + " s); a DMP is one motion: " + how);
-  }
-  for (std::size_t count = 2 * parameters.basis_count; count <= 1000; count *= 2)
-  {
-    vrrw_dmp::DmpParameters more = parameters;
-    more.basis_count = count;
-    const double fit = reproductionRmse(vrrw_dmp::Dmp::learn(demo.trajectory, more), demo.trajectory);
-    if (fit <= kGoodFit)
-    {
-      advice.push_back("--basis " + std::to_string(count) + " reproduces it within " + number(fit) + " rad");
-      return advice;
-    }
-  }
-  advice.push_back("no basis count up to 1000 reproduces it within " + number(kGoodFit) + " rad");
-  return advice;
 }
 
 int learn(int argc, char** argv)
@@ -133,11 +58,11 @@ int learn(int argc, char** argv)
   for (const auto& warning : dmp.warnings())
     std::cerr << "vrrw dmp: warning: " << warning << "\n";
   vrrw_dmp::saveDmp(dmp, out);
-  const double rmse = reproductionRmse(dmp, demo.trajectory);
+  const double rmse = vrrw_dmp::reproductionRmse(dmp, demo.trajectory);
   std::cout << "learned " << dmp.dofs() << " joints from " << demo.source << " (" << demo.trajectory.points.size()
             << " samples, " << dmp.demoDuration() << " s), N = " << parameters.basis_count << ", reproduction RMSE "
-            << number(rmse) << " rad -> " << out << "\n";
-  for (const auto& line : fitAdvice(demo, parameters, rmse))
+            << std::setprecision(3) << rmse << std::setprecision(6) << " rad -> " << out << "\n";  // %.3g
+  for (const auto& line : vrrw_dmp::fitAdvice(demo, parameters, rmse))
     std::cout << "advice: " << line << "\n";
   return 0;
 }
@@ -205,31 +130,6 @@ void appendSeries(std::ostringstream& json, const std::string& label, const vrrw
   json << "]}";
 }
 
-int runPlotScript(const std::string& json)
-{
-  int pipe_fds[2];
-  if (pipe(pipe_fds) != 0)
-    throw std::runtime_error("plot: cannot create a pipe");
-  const std::string script = std::string(VRRW_DMP_SCRIPTS) + "/plot_dmp.py";
-  const pid_t child = fork();
-  if (child == 0)
-  {
-    dup2(pipe_fds[0], STDIN_FILENO);
-    close(pipe_fds[0]);
-    close(pipe_fds[1]);
-    execl("/usr/bin/python3", "python3", script.c_str(), static_cast<char*>(nullptr));
-    std::perror("vrrw dmp: plot: cannot run /usr/bin/python3");
-    _exit(127);
-  }
-  close(pipe_fds[0]);
-  FILE* to_child = fdopen(pipe_fds[1], "w");
-  std::fwrite(json.data(), 1, json.size(), to_child);
-  std::fclose(to_child);
-  int status = 0;
-  waitpid(child, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
-}
-
 int plot(int argc, char** argv)
 {
   const Options options(argc, argv, 2, { "demo", "rollout", "out", "title" });
@@ -254,7 +154,11 @@ int plot(int argc, char** argv)
                  vrrw_trajectory::readCsv(path), demo.joint_names, path);
   }
   json << "]}";
-  const int status = runPlotScript(json.str());
+  const std::string data = json.str();
+  vrrw_common::ProgramStreams streams;
+  streams.input = &data;  // the plot script reads the series as JSON on its standard input
+  const int status = vrrw_common::runProgram({ "/usr/bin/python3", std::string(VRRW_DMP_SCRIPTS) + "/plot_dmp.py" },
+                                             streams);
   if (status != 0)
     throw std::runtime_error("plot: the plot script failed (exit " + std::to_string(status) + ")");
   std::cout << "plotted " << demo.joint_names.size() << " joints -> " << out << "\n";

@@ -232,7 +232,7 @@ def main():
     # lockstep); the demonstration is recorded at 100 Hz of simulated time (a viewer gets 50 Hz).
     launch = os.path.join(workdir, 'demo.launch')
     with open(launch, 'w') as f:
-        # the workspace's launch runs vrrw_demos' recorder when it is built (demo_runner records itself otherwise)
+        # the workspace's launch runs vrrw_demos' recorder, the demonstration's one bag writer
         f.write(f'<launch>\n  <include file="{args.launch}"/>\n'
                 f'  <param name="/physics/publish_rate" value="100"/>\n</launch>\n')
     demo_config(config)

@@ -1,6 +1,6 @@
 #include <vrrw_evaluation/annotations.h>
+#include <vrrw_evaluation/evaluation_error.h>
 
-#include <stdexcept>
 
 #include <vrrw_evaluation/pick_place_task.h>
 
@@ -23,7 +23,7 @@ std::vector<vrrw_demos::Segment> annotatedInstructions(const vrrw_demos::Demonst
     if (kind == "instruction_start")
     {
       if (open)
-        throw std::runtime_error(where + segments.back().name + " has no end before " + name);
+        throw EvaluationError(where + segments.back().name + " has no end before " + name);
       vrrw_demos::Segment segment;
       segment.name = name;
       segment.start = segment.end = event.time;
@@ -34,13 +34,13 @@ std::vector<vrrw_demos::Segment> annotatedInstructions(const vrrw_demos::Demonst
     else if (kind == "instruction_end" || kind == "instruction_failed")
     {
       if (!open || segments.back().name != name)
-        throw std::runtime_error(where + "the end of " + name + " without its start");
+        throw EvaluationError(where + "the end of " + name + " without its start");
       segments.back().end = event.time;
       open = false;
     }
   }
   if (open)
-    throw std::runtime_error(where + segments.back().name + " has no end");
+    throw EvaluationError(where + segments.back().name + " has no end");
   return segments;
 }
 }  // namespace vrrw_evaluation

@@ -1,11 +1,11 @@
 #include <vrrw_evaluation/demo_report.h>
+#include <vrrw_evaluation/evaluation_error.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <stdexcept>
 
 namespace vrrw_evaluation
 {
@@ -231,7 +231,7 @@ void writeReport(const DemoReport& report, const std::string& directory)
     std::ofstream out(path);
     out << text;
     if (!out.good())
-      throw std::runtime_error(path + ": cannot write");
+      throw EvaluationError(path + ": cannot write");
   }
 }
 }  // namespace vrrw_evaluation

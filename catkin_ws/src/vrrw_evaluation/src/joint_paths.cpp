@@ -1,8 +1,8 @@
 #include <vrrw_evaluation/joint_paths.h>
+#include <vrrw_evaluation/evaluation_error.h>
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include <vrrw_demos/segmentation.h>
 
@@ -15,7 +15,7 @@ std::vector<double> positionsAt(const JointTrajectory& trajectory, double t)
 {
   const auto& points = trajectory.points;
   if (points.empty())
-    throw std::invalid_argument("positionsAt: empty trajectory");
+    throw EvaluationError("positionsAt: empty trajectory");
   if (t <= points.front().time)
     return points.front().positions;
   if (t >= points.back().time)
@@ -42,7 +42,7 @@ double largestJointDifference(const std::vector<double>& a, const std::vector<do
 double jointRms(const JointTrajectory& reference, const JointTrajectory& measured)
 {
   if (reference.points.empty() || measured.points.empty())
-    throw std::invalid_argument("jointRms: empty trajectory");
+    throw EvaluationError("jointRms: empty trajectory");
   const double t0 = reference.points.front().time;
   const double m0 = measured.points.front().time;
   double sum = 0.0;

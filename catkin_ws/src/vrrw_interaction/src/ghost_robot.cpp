@@ -77,6 +77,8 @@ Eigen::Isometry3d GhostRobot::tcpPose(const Eigen::VectorXd& world_state)
   return arm_.basePose(world_state) * arm_.ikSolver().chain().fk(q_);
 }
 
+// The ghost only ever stands where the robot could: within its limits and free of collision (the place contact
+// allowed while a held object is set down).
 Outcome GhostRobot::moveTo(const Eigen::VectorXd& q, const Eigen::VectorXd& world_state, const std::string& what)
 {
   if (const std::string violation = arm_.bounds().violation(q); !violation.empty())
@@ -97,7 +99,7 @@ Outcome GhostRobot::setJoints(const std::vector<std::string>& names, const std::
 {
   const std::vector<std::string>& joints = arm_.jointNames();
   Eigen::VectorXd q = q_;
-  if (names.empty())
+  if (names.empty())  // every joint, in the arm's own order
   {
     if (positions.size() != joints.size())
       return { false, "position: " + std::to_string(positions.size()) + " values, the arm has " +
@@ -105,7 +107,7 @@ Outcome GhostRobot::setJoints(const std::vector<std::string>& names, const std::
     for (std::size_t i = 0; i < positions.size(); ++i)
       q[static_cast<Eigen::Index>(i)] = positions[i];
   }
-  else
+  else  // some joints by name (the others keep their values); a name twice is refused, as /<robot>/plan does
   {
     if (names.size() != positions.size())
       return { false, "name/position: " + std::to_string(names.size()) + " names but " +
@@ -196,6 +198,7 @@ vrrw_kinematics::TrajectoryResult GhostRobot::plan(const Eigen::VectorXd& world_
                                                    const vrrw_kinematics::SpeedScaling& scaling,
                                                    vrrw_kinematics::TimeProfile profile)
 {
+  // From where the robot is now (not the ghost) through the waypoints to the ghost.
   vrrw_kinematics::TrajectoryRequest request;
   request.scaling = scaling;
   request.profile = profile;

@@ -9,8 +9,8 @@
 #include <tf2_ros/transform_listener.h>
 #include <vrrw_scene/scene_loader.h>
 
-#include "robot_services.h"
-#include "scene_context.h"
+#include "../src/ros/robot_services.h"
+#include "../src/ros/scene_context.h"
 
 int main(int argc, char** argv)
 {

@@ -2,7 +2,6 @@
 
 #include <tinyxml2.h>
 
-#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -10,6 +9,8 @@
 #include <map>
 #include <sstream>
 #include <unistd.h>
+
+#include <vrrw_common/run_program.h>
 
 #include "vrrw_scene/mesh_path.h"
 #include "vrrw_scene/scene.h"
@@ -116,19 +117,12 @@ std::string runXacro(const std::string& xacro, const std::string& document_path)
 {
   if (access(xacro.c_str(), X_OK) != 0)
     throw SceneError(xacro + ": xacro is not installed; run ./vrrw setup");
-  const std::string errors = document_path + ".err";
-  const std::string command = "'" + xacro + "' '" + document_path + "' 2>'" + errors + "'";
-  std::string output;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe)
-    throw SceneError(document_path + ": cannot start xacro");
-  std::array<char, 65536> buffer;
-  std::size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  std::string message = readWholeFile(errors);
-  fs::remove(errors);
+  // By argv, never a shell: the document's path is the scene author's (a custom robot's description).
+  std::string output, message;
+  vrrw_common::ProgramStreams streams;
+  streams.output = &output;
+  streams.errors = &message;
+  const int status = vrrw_common::runProgram({ xacro, document_path }, streams);
   if (status != 0 || output.empty())
   {
     std::string first;
@@ -136,6 +130,8 @@ std::string runXacro(const std::string& xacro, const std::string& document_path)
     for (std::string line; std::getline(lines, line);)
       if (!line.empty())
         first = line;  // xacro prints its reason last
+    if (status < 0 && first.empty())
+      first = "cannot start " + xacro;
     throw SceneError(document_path + ": xacro failed: " + (first.empty() ? "no output" : first));
   }
   return output;

@@ -247,6 +247,25 @@ TEST(CustomScene, PrefixesEveryNameAndFindsTheChain)
   EXPECT_EQ(scene.urdf.find("name=\"joint1\""), std::string::npos);
 }
 
+TEST(CustomScene, AXacroPathIsAnArgumentNeverShellText)
+{
+  // issue 21, bad input 1: xacro ran through popen with the scene author's path inside quotes
+  const fs::path folder = fs::temp_directory_path() / ("vrrw_scene_quote_" + std::to_string(getpid()));
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const std::string marker = "vrrw_PWNED_" + std::to_string(getpid());  // a shell would make it in our directory
+  const std::string hostile = "two_link';touch " + marker + ";'.xacro";
+  fs::copy_file(testFile("scenes/two_link.urdf"), folder / hostile);
+  fs::copy_file(testFile("scenes/two_link.yaml"), folder / "two_link.yaml");
+  std::ofstream(folder / "scene.yaml") << "robots:\n  - name: left\n    description: \"" << hostile
+                                       << "\"\n    tip_link: tip\n    config: two_link.yaml\n";
+  const auto scene = loadScene((folder / "scene.yaml").string(), testOptions());
+  ASSERT_EQ(scene.robots.size(), 1u);
+  EXPECT_EQ(scene.robots[0].arm_joints, (std::vector<std::string>{ "left_joint1", "left_joint2" }));
+  EXPECT_FALSE(fs::exists(fs::current_path() / marker));
+  fs::remove_all(folder);
+}
+
 TEST(CustomScene, PrimitiveObjectsHaveBoxAndCylinderInertia)
 {
   const auto scene = loadScene(testFile("scenes/custom_robot.yaml"), testOptions());

@@ -107,6 +107,8 @@ void BagRecorder::start(const std::string& file, std::vector<std::string> robots
   status_.active_file = file + kActiveSuffix;
   status_.robots = std::move(robots);
   openActiveFile();
+  // What a demonstration is: the robots' own topics (states, goals, operator commands), the operator's hands,
+  // the annotations, tf (object poses), the scene's objects and what physics says of contacts and the hand.
   patterns_.clear();
   for (const std::string& robot : status_.robots)
     patterns_.emplace_back("/" + robot + "/.*");
@@ -228,12 +230,13 @@ void BagRecorder::fail(const std::string& reason)
 void BagRecorder::writeLoop()
 {
   ros::WallTime last_flush = ros::WallTime::now();
-  const uint32_t threshold = 768 * 1024;
+  const uint32_t threshold = 768 * 1024;  // bytes: rosbag's own default chunk size
   while (true)
   {
     std::deque<Queued> batch;
     {
       std::unique_lock<std::mutex> lock(mutex_);
+      // woken by each message; the 100 ms bound only re-checks the predicate should a notification be missed
       wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return !queue_.empty() || stopping_; });
       batch.swap(queue_);
       if (batch.empty() && stopping_)

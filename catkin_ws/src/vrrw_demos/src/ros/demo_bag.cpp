@@ -1,5 +1,7 @@
 #include <vrrw_demos/ros/demo_bag.h>
 
+#include <vrrw_common/joint_mapping.h>
+
 #include <algorithm>
 #include <regex>
 #include <set>
@@ -96,6 +98,7 @@ BagMetadata metadataOf(rosbag::Bag& bag, const std::string& path)
   return {};
 }
 
+/// A bag without metadata (another recorder's) names no gripper joint: the grippers vrrw ships name theirs so.
 bool looksLikeGripper(const std::string& joint)
 {
   return joint.find("finger") != std::string::npos || joint.find("gripper") != std::string::npos;
@@ -117,12 +120,6 @@ void jointsOf(RobotTrack& track, const BagMetadata& metadata, const sensor_msgs:
       track.joint_names.push_back(name);
     else if (track.gripper_joint.empty())
       track.gripper_joint = name;
-}
-
-double index(const sensor_msgs::JointState& state, const std::string& joint)
-{
-  const auto found = std::find(state.name.begin(), state.name.end(), joint);
-  return found == state.name.end() ? -1 : static_cast<double>(found - state.name.begin());
 }
 
 /// Central differences where the bag had no velocities (one-sided at the ends).
@@ -155,24 +152,19 @@ void readTrack(rosbag::Bag& bag, const std::string& path, const BagMetadata& met
       throw DemoError(path + ": " + topic + " has " + message.getDataType() + ", expected sensor_msgs/JointState");
     if (track.joint_names.empty())
       jointsOf(track, metadata, *state);
-    const double g = track.gripper_joint.empty() ? -1 : index(*state, track.gripper_joint);
-    if (g >= 0 && g < state->position.size())
-      gripper = state->position[static_cast<std::size_t>(g)];
+    if (!track.gripper_joint.empty())
+      if (const auto g = vrrw_common::findValues(state->name, state->position, { track.gripper_joint }))
+        gripper = g->front();
+    const auto positions = vrrw_common::findValues(state->name, state->position, track.joint_names);
+    if (!positions)
+      continue;  // another publisher's message (a gripper alone)
     RobotState sample;
     sample.time = (state->header.stamp.isZero() ? message.getTime() : state->header.stamp).toSec() - start;
     sample.gripper = gripper;
-    bool velocity = state->velocity.size() == state->name.size();
-    for (const std::string& joint : track.joint_names)
-    {
-      const double j = index(*state, joint);
-      if (j < 0 || j >= state->position.size())
-        break;
-      sample.positions.push_back(state->position[static_cast<std::size_t>(j)]);
-      if (velocity)
-        sample.velocities.push_back(state->velocity[static_cast<std::size_t>(j)]);
-    }
-    if (sample.positions.size() != track.joint_names.size())
-      continue;  // another publisher's message (a gripper alone)
+    sample.positions = *positions;
+    const bool velocity = state->velocity.size() == state->name.size();
+    if (velocity)
+      sample.velocities = *vrrw_common::findValues(state->name, state->velocity, track.joint_names);
     if (!track.states.empty() && !(sample.time > track.states.back().time))
       continue;  // a repeated stamp: the same state published twice
     has_velocity.push_back(velocity);
@@ -206,7 +198,10 @@ Demonstration readDemonstration(const std::string& path, const std::vector<std::
   demo.metadata = metadataOf(bag, path);
   const BagMetadata& metadata = demo.metadata;
   rosbag::View all(bag);
+  // time 0 of every track, event and pose: the recorder's start, or the bag's first message without metadata
   demo.start_stamp = metadata.start_stamp > 0 ? metadata.start_stamp : all.getBeginTime().toSec();
+
+  // The robots: every /<robot>/joint_states in the bag (or those asked for), each read into its track.
 
   std::set<std::string> found;
   const std::regex states("/([^/]+)/joint_states");
@@ -230,12 +225,14 @@ Demonstration readDemonstration(const std::string& path, const std::vector<std::
     readTrack(bag, path, metadata, demo.start_stamp, demo.robots.back());
   }
 
+  // The operator's and the annotations' events, at their own stamps (the receipt time when unstamped).
   rosbag::View events(bag, rosbag::TopicQuery(std::vector<std::string>{ "/operator/events", "/demos/events" }));
   for (const rosbag::MessageInstance& message : events)
     if (const auto event = message.instantiate<vrrw_msgs::Event>())
       demo.events.push_back({ (event->header.stamp.isZero() ? message.getTime() : event->header.stamp).toSec() -
                                   demo.start_stamp, event->robot, event->kind, event->detail });
 
+  // The objects' poses from the recorded tf: the metadata's objects, or (no metadata) every frame under world.
   const std::set<std::string> objects(metadata.objects.begin(), metadata.objects.end());
   rosbag::View tf(bag, rosbag::TopicQuery(std::vector<std::string>{ "/tf", "/tf_static" }));
   for (const rosbag::MessageInstance& message : tf)

@@ -7,7 +7,7 @@
 
 #include <vrrw_demos/demo_error.h>
 #include <vrrw_demos/new_file.h>
-#include <vrrw_demos/run_program.h>
+#include <vrrw_common/run_program.h>
 #include <vrrw_msgs/DemoStatus.h>
 #include <vrrw_msgs/Event.h>
 #include <vrrw_scene/scene_loader.h>
@@ -28,7 +28,8 @@ std::string readText(const std::string& path)
 std::string vrrwVersion()
 {
   std::string version;
-  runProgram({ "git", "-C", vrrw_scene::vrrwRoot(), "describe", "--always", "--dirty", "--tags" }, &version, true);
+  vrrw_common::runProgram({ "git", "-C", vrrw_scene::vrrwRoot(), "describe", "--always", "--dirty", "--tags" },
+                          &version, true);
   while (!version.empty() && (version.back() == '\n' || version.back() == ' '))
     version.pop_back();
   return version.empty() ? "unknown" : version;

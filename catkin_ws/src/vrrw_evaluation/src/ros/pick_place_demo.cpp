@@ -8,7 +8,7 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
-#include <vrrw_demos/run_program.h>
+#include <vrrw_common/run_program.h>
 #include <vrrw_skills/trial_outcome.h>
 
 #include <vrrw_demos/ros/demo_bag.h>
@@ -108,14 +108,21 @@ void PickPlaceDemo::capture(const std::string& row, std::size_t boundary, bool f
   std::vector<std::string> argv;
   for (std::string word; words >> word;)
     argv.push_back(word == "{file}" ? file : word);
-  if (vrrw_demos::runProgram(argv) != 0)
+  if (vrrw_common::runProgram(argv) != 0)
     progress("frame capture failed: " + options_.capture_command + " (file " + file + ")");
 }
 
 bool PickPlaceDemo::perform(const std::string& row, bool frames, const std::vector<Instruction>& instructions,
                             Recording& recording, std::vector<Segment>& segments, std::string& error)
 {
-  client_.startRecording(row == "demonstration" ? options_.out + "/demonstration.bag" : "");
+  try
+  {
+    client_.startRecording(row == "demonstration" ? options_.out + "/demonstration.bag" : "");
+  }
+  catch (const std::runtime_error& e)  // the recorder did not take the bag
+  {
+    return error = e.what(), false;
+  }
   bool ok = true;
   for (std::size_t i = 0; i < instructions.size() && ok; ++i)
   {

@@ -4,11 +4,12 @@
 
 #include <tf2_eigen/tf2_eigen.h>
 #include <cstdio>
+#include <stdexcept>
+#include <vrrw_common/joint_mapping.h>
 #include <vrrw_msgs/ComputeIK.h>
 #include <vrrw_msgs/DemoAnnotate.h>
 #include <vrrw_msgs/DemoStart.h>
 #include <vrrw_msgs/DemoStop.h>
-#include <vrrw_msgs/Event.h>
 #include <vrrw_msgs/Plan.h>
 #include <vrrw_physics/SetObjectPose.h>
 #include <vrrw_skills/trial_outcome.h>
@@ -162,6 +163,8 @@ std::optional<std::vector<double>> WorkspaceClient::ik(const Eigen::Isometry3d& 
   srv.request.pose.pose = tf2::toMsg(tcp);
   srv.request.seed = jointState(robot_.arm_joints, seed);
   srv.request.mode = vrrw_msgs::ComputeIK::Request::FULL;
+  // 50 ms: the closed-form UR solver takes microseconds (vrrw_kinematics' bench ik); the bound only keeps a
+  // numeric search on another arm from holding a trial
   srv.request.timeout = 0.05;
   srv.request.avoid_collisions = avoid_collisions;
   const ros::WallTime start = ros::WallTime::now();
@@ -172,13 +175,8 @@ std::optional<std::vector<double>> WorkspaceClient::ik(const Eigen::Isometry3d& 
     return error = "compute_ik did not answer", std::nullopt;
   if (srv.response.error_code != 0)
     return error = srv.response.message, std::nullopt;
-  const auto& solution = srv.response.solution;
-  std::vector<double> q;
-  for (const std::string& joint : robot_.arm_joints)
-    for (std::size_t i = 0; i < solution.name.size() && i < solution.position.size(); ++i)
-      if (solution.name[i] == joint)
-        q.push_back(solution.position[i]);
-  if (q.size() != robot_.arm_joints.size())
+  const auto q = vrrw_common::findValues(srv.response.solution.name, srv.response.solution.position, robot_.arm_joints);
+  if (!q)
     return error = "compute_ik answered without every arm joint", std::nullopt;
   return q;
 }
@@ -188,8 +186,8 @@ std::optional<vrrw_trajectory::JointTrajectory> WorkspaceClient::plan(const std:
 {
   vrrw_msgs::Plan srv;
   srv.request.goal_joints = jointState(robot_.arm_joints, goal);
-  srv.request.time_limit = 2.0;
-  srv.request.seed = 1;
+  srv.request.time_limit = 2.0;  // s of OMPL's search: the demo's cell plans within 10 ms at p95 (bench plan)
+  srv.request.seed = 1;  // the same plan for the same request: runs with one --seed repeat
   if (!links_.tryCall(plan_, srv))
     return error = "plan did not answer", std::nullopt;
   if (srv.response.error_code != 0)
@@ -225,23 +223,21 @@ void WorkspaceClient::startRecording(const std::string& bag_file)
   if (!bag_file.empty())
   {
     std::remove(bag_file.c_str());  // the report's own bag of an earlier run (vrrw_demos never overwrites)
+    // The one bag writer is vrrw_demos' recorder (./vrrw up and the demo's launch run it idle).
     vrrw_msgs::DemoStart start;
     start.request.file = bag_file;
     start.request.robots = { robot_.name };
-    const bool recorder = ros::service::waitForService("/demos/start", ros::Duration(3.0));
-    demos_recording_ = recorder && links_.tryCall("/demos/start", start) && start.response.success;
-    if (recorder && !demos_recording_)
-      ROS_WARN_STREAM("/demos/start: " << start.response.message << "; recording with demo_runner's own bag");
+    std::string why;
+    if (!links_.tryCall("/demos/start", start, &why))
+      throw std::runtime_error(why + ": the demonstration is recorded by vrrw_demos' recorder_node");
+    if (!start.response.success)
+      throw std::runtime_error("/demos/start: " + start.response.message);
+    demos_recording_ = true;
   }
   std::lock_guard<std::mutex> lock(mutex_);
   recording_data_ = Recording();
   recording_data_.bag_file = bag_file;
-  recording_data_.recorder = demos_recording_ ? "vrrw_demos recorder_node" : "demo_runner";
-  if (!bag_file.empty() && !demos_recording_)
-  {
-    bag_.open(bag_file, rosbag::bagmode::Write);
-    bag_open_ = true;
-  }
+  recording_data_.recorder = "vrrw_demos recorder_node";
   recording_data_.arm.joint_names = robot_.arm_joints;
   record_start_ = ros::Time::now();
   recording_ = true;
@@ -264,38 +260,21 @@ Recording WorkspaceClient::stopRecording()
   recording_data_.bag_messages = demos_messages;
   recording_data_.seconds = (ros::Time::now() - record_start_).toSec();
   recording_data_.start_stamp = record_start_.toSec();
-  if (bag_open_)
-  {
-    recording_data_.bag_messages =
-        recording_data_.joint_state_messages + recording_data_.contact_messages + recording_data_.event_messages;
-    bag_.close();
-  }
-  bag_open_ = false;
   return std::move(recording_data_);
 }
 
 void WorkspaceClient::annotate(const std::string& kind, const std::string& detail)
 {
-  vrrw_msgs::Event event;
-  event.header.stamp = ros::Time::now();
-  event.source = "demo_script";
-  event.robot = robot_.name;
-  event.kind = kind;
-  event.detail = detail;
   if (demos_recording_)
   {
     vrrw_msgs::DemoAnnotate annotate;
-    annotate.request.stamp = event.header.stamp;  // the bag's event at the instant the runner's clock says
+    annotate.request.stamp = ros::Time::now();  // the bag's event at the instant the runner's clock says
     annotate.request.text = kind + " " + detail;
     links_.tryCall("/demos/annotate", annotate);
   }
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!recording_)
-    return;
-  ++recording_data_.event_messages;
-  if (!bag_open_)
-    return;
-  bag_.write("/demos/events", event.header.stamp, event);
+  if (recording_)
+    ++recording_data_.event_messages;
 }
 
 double WorkspaceClient::recordingTime() const
@@ -310,24 +289,17 @@ double WorkspaceClient::realTimeFactor() const
 
 void WorkspaceClient::onJointStates(const sensor_msgs::JointState::ConstPtr& msg)
 {
-  std::vector<double> q, qd;
-  for (const std::string& joint : robot_.arm_joints)
-    for (std::size_t i = 0; i < msg->name.size(); ++i)
-      if (msg->name[i] == joint)
-      {
-        q.push_back(msg->position[i]);
-        qd.push_back(i < msg->velocity.size() ? msg->velocity[i] : 0.0);
-      }
-  if (q.size() != robot_.arm_joints.size())
-    return;
+  const auto q = vrrw_common::findValues(msg->name, msg->position, robot_.arm_joints);
+  if (!q)
+    return;  // the gripper's own message, or another robot's
+  std::vector<double> qd = vrrw_common::findValues(msg->name, msg->velocity, robot_.arm_joints)
+                               .value_or(std::vector<double>(q->size(), 0.0));
   std::lock_guard<std::mutex> lock(mutex_);
-  latest_ = q;
+  latest_ = *q;
   if (!recording_)
     return;
   ++recording_data_.joint_state_messages;
-  if (bag_open_)
-    bag_.write("/" + robot_.name + "/joint_states", msg->header.stamp, *msg);
-  recording_data_.arm.points.push_back({ (msg->header.stamp - record_start_).toSec(), q, qd, {} });
+  recording_data_.arm.points.push_back({ (msg->header.stamp - record_start_).toSec(), *q, std::move(qd), {} });
 }
 
 void WorkspaceClient::onContacts(const vrrw_physics::Contacts::ConstPtr& msg)
@@ -336,8 +308,6 @@ void WorkspaceClient::onContacts(const vrrw_physics::Contacts::ConstPtr& msg)
   if (!recording_)
     return;
   ++recording_data_.contact_messages;
-  if (bag_open_)
-    bag_.write("/physics/contacts", msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp, *msg);
   for (const auto& c : msg->contacts)
     if (vrrw_skills::isArmCollision(c.body_a, c.body_b, robot_.name, obstacles_))
       recording_data_.arm_contacts.insert(c.body_a + "|" + c.body_b);

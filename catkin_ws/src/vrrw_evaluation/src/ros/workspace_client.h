@@ -8,7 +8,6 @@
 #include <mutex>
 #include <optional>
 #include <ros/ros.h>
-#include <rosbag/bag.h>
 #include <sensor_msgs/JointState.h>
 #include <set>
 #include <tf2_ros/transform_listener.h>
@@ -38,7 +37,7 @@ struct Recording
   std::uint64_t contact_messages = 0;
   std::uint64_t event_messages = 0;
   std::string bag_file;  ///< the bag written beside, empty: none
-  std::string recorder;  ///< who wrote it: "vrrw_demos recorder_node" or "demo_runner"
+  std::string recorder;  ///< who wrote it: "vrrw_demos recorder_node", the one bag writer
   std::uint64_t bag_messages = 0;  ///< messages in the bag
   double seconds = 0.0;  ///< wall
   double start_stamp = 0.0;  ///< s of ROS time at the start: time 0 of every field above
@@ -72,9 +71,9 @@ public:
   /// \brief /physics/set_object_pose, then waits until tf shows the object there.
   bool placeObject(const Eigen::Isometry3d& pose, std::string& error);
 
-  /// \brief Starts recording; with `bag_file` also into that bag: through vrrw_demos' /demos/start when a
-  /// recorder node runs (everything the workspace publishes), else this client's own (joint_states,
-  /// contacts, events). An existing `bag_file` is replaced.
+  /// \brief Starts recording; with `bag_file` also into that bag through vrrw_demos' /demos/start (everything
+  /// the workspace publishes); throws std::runtime_error naming the service when the recorder does not take it.
+  /// An existing `bag_file` (an earlier run's report) is replaced.
   void startRecording(const std::string& bag_file = "");
   Recording stopRecording();
   /// \brief An event (vrrw_msgs/Event on /demos/events in the bag): `kind` one word, `detail` one line.
@@ -104,19 +103,22 @@ private:
   actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper_;
   std::string ik_, plan_;  ///< /<robot>/compute_ik, /<robot>/plan
   vrrw_common::PersistentServices links_;
+  /// /demos/start took this recording's bag: stop and annotate go to the recorder. The runner's thread only.
   bool demos_recording_ = false;
   ros::Subscriber joint_states_, contacts_;
   ros::Timer track_timer_;
 
+  /// Protects latest_, recording_, record_start_ and recording_data_: the spinner's threads (joint_states,
+  /// contacts, the track timer) write them while the runner's thread reads them.
   mutable std::mutex mutex_;
-  std::vector<double> latest_;
-  std::vector<double> max_velocity_;
-  bool recording_ = false;
-  ros::Time record_start_;  ///< physics stamps joint_states with the same clock
-  Recording recording_data_;
-  rosbag::Bag bag_;
-  bool bag_open_ = false;
-  ros::Time ready_sim_;
+  std::vector<double> latest_;  ///< PROTECTED BY mutex_: the arm's last measured joints, arm_joints order
+  std::vector<double> max_velocity_;  ///< written once by waitUntilReady(), before any recording
+  bool recording_ = false;  ///< PROTECTED BY mutex_
+  /// PROTECTED BY mutex_ for the callbacks; the runner's thread, its only writer, also reads it unlocked
+  /// (recordingTime). Physics stamps joint_states with the same clock.
+  ros::Time record_start_;
+  Recording recording_data_;  ///< PROTECTED BY mutex_
+  ros::Time ready_sim_;  ///< the simulated and wall instants waitUntilReady() succeeded: realTimeFactor()'s start
   ros::WallTime ready_wall_;
 };
 }  // namespace vrrw_evaluation

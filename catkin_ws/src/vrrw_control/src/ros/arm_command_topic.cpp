@@ -1,5 +1,5 @@
 #include <std_msgs/String.h>
-#include <vrrw_control/arm_command_topic.h>
+#include <vrrw_control/ros/arm_command_topic.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
 namespace vrrw_control

@@ -2,7 +2,7 @@
 #include <actionlib/server/action_server.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <ros/ros.h>
-#include <vrrw_control/arm_action_server.h>
+#include <vrrw_control/ros/arm_action_server.h>
 #include <vrrw_control/gripper_controller.h>
 
 namespace vrrw_control

@@ -1,4 +1,4 @@
-#include <vrrw_control/ros_drive_link.h>
+#include <vrrw_control/ros/ros_drive_link.h>
 
 namespace vrrw_control
 {

@@ -3,7 +3,7 @@
 // controller_node runs in fake and real mode, on a PhysicsRobot that physics measures and commands each step.
 #include <pluginlib/class_list_macros.hpp>
 #include <vrrw_control/physics_robot.h>
-#include <vrrw_control/robot_controllers.h>
+#include <vrrw_control/ros/robot_controllers.h>
 #include <vrrw_physics/ros/robot_controller.h>
 
 namespace vrrw_control

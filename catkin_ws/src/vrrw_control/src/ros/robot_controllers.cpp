@@ -1,7 +1,7 @@
 #include <cmath>
 #include <std_msgs/Bool.h>
-#include <vrrw_control/robot_controllers.h>
-#include <vrrw_control/ros_drive_link.h>
+#include <vrrw_control/ros/robot_controllers.h>
+#include <vrrw_control/ros/ros_drive_link.h>
 
 namespace vrrw_control
 {
@@ -33,7 +33,10 @@ void RobotControllers::makeArm(ros::NodeHandle& pnh)
   ValidationOptions gate;
   gate.start_tolerance = pnh.param("start_tolerance", gate.start_tolerance);
   ArmController::Options options;
+  // real mode is strict (no splicing): a goal is previewed from rest and starts where the arm is, as the real
+  // driver's start tolerance requires
   options.splice = mode_ != "real" && pnh.param("insert_blend", true);
+  // stops decelerate at each joint's acceleration limit; the parameter (rad/s^2) only for a joint without one
   const double stop_deceleration = pnh.param("stop_deceleration", 3.0);
   for (const auto& l : limits)
     options.stop_deceleration.push_back(std::isfinite(l.max_acceleration) ? l.max_acceleration : stop_deceleration);
@@ -44,8 +47,10 @@ void RobotControllers::makeArm(ros::NodeHandle& pnh)
   server_options_.defaults = Tolerances::uniform(
       robot_.arm_joints.size(), pnh.param("path_tolerance", 0.0), pnh.param("goal_tolerance", 0.01),
       pnh.param("goal_velocity_tolerance", 0.0), pnh.param("goal_time", 1.0));
-  server_options_.confirm_timeout = pnh.param("confirm_timeout", 120.0);
+  server_options_.confirm_timeout = pnh.param("confirm_timeout", 120.0);  // s a person has to confirm a real goal
   server_options_.queue_size = pnh.param("action_queue_size", server_options_.queue_size);
+  // physics mode cycles at the simulation's 1 ms step: feedback at 50 Hz, as for every observer (a running
+  // workspace's CPU goes mostly to messages)
   const double feedback_rate = pnh.param("feedback_rate", mode_ == "physics" ? 50.0 : 0.0);
   server_options_.feedback_period = feedback_rate > 0.0 ? 1.0 / feedback_rate : 0.0;
   std::unique_ptr<RealDriverRelay> relay;
@@ -85,6 +90,7 @@ void RobotControllers::makeGripper(ros::NodeHandle& pnh)
                                                           pnh.param("allow_stalling", true));
 }
 
+// ros_control's order: read the hardware (and the real arm, measured), update the controllers, write commands.
 void RobotControllers::cycle(const ros::Time& now, double period)
 {
   const double t = (now - server_options_.clock_origin).toSec();

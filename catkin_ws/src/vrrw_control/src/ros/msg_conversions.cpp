@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <vrrw_control/msg_conversions.h>
+#include <vrrw_control/ros/msg_conversions.h>
 
 namespace vrrw_control
 {

@@ -3,12 +3,12 @@
 #include <memory>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
-#include <vrrw_control/arm_action_server.h>
-#include <vrrw_control/arm_command_topic.h>
+#include <vrrw_control/ros/arm_action_server.h>
+#include <vrrw_control/ros/arm_command_topic.h>
 #include <vrrw_control/drive_link.h>
-#include <vrrw_control/gripper_action_server.h>
+#include <vrrw_control/ros/gripper_action_server.h>
 #include <vrrw_control/real_robot.h>
-#include <vrrw_control/robot_description.h>
+#include <vrrw_control/ros/robot_description.h>
 
 namespace vrrw_control
 {

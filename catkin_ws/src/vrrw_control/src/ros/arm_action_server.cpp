@@ -1,5 +1,5 @@
-#include <vrrw_control/arm_action_server.h>
-#include <vrrw_control/msg_conversions.h>
+#include <vrrw_control/ros/arm_action_server.h>
+#include <vrrw_control/ros/msg_conversions.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
 namespace vrrw_control
@@ -16,6 +16,8 @@ int codeOf(Validation::Error e)
 const char* const kFreeDrive = "free-drive active";
 }  // namespace
 
+// actionlib reads its topics' queue sizes from these parameters when the server or client is made: a burst of
+// goals beyond the default queue would be dropped unanswered.
 ros::NodeHandle sizedActionQueues(ros::NodeHandle& nh, const std::string& name, int size)
 {
   for (const char* side : { "server", "client" })
@@ -84,6 +86,9 @@ std::pair<int, std::string> ArmActionServer::admissible(const control_msgs::Foll
   return { Result::SUCCESSFUL, "" };
 }
 
+// A goal's way in: (1) admitted (free-drive, hardware, stamp, a real goal running), (2) its tolerances
+// applied, (3) validated from where the arm will be (real mode with a measured arm: from the real arm's state,
+// strictly; otherwise planned into the running motion), (4) the running goal preempted, (5) started.
 void ArmActionServer::onGoal(GoalHandle gh)
 {
   const auto goal = gh.getGoal();
@@ -134,9 +139,9 @@ void ArmActionServer::onCancel(GoalHandle gh)
   if (phase_ == Phase::Idle || !(gh == active_))
     return;
   if (phase_ == Phase::Simulating)
-    arm_.stop(toTime(options_.clock()));
+    arm_.stop(toTime(options_.clock()));  // a smooth stop within the acceleration limits
   if (phase_ == Phase::Relaying)
-    relay_->cancel();
+    relay_->cancel();  // the real arm stops where its driver stops it; the result says the cancel was forwarded
   Result r;
   r.error_string = phase_ == Phase::Relaying ? "canceled; cancel forwarded to the real driver" : "canceled";
   active_.setCanceled(r, r.error_string);
@@ -192,6 +197,8 @@ bool ArmActionServer::onConfirm(std_srvs::Trigger::Request&, std_srvs::Trigger::
                                                 "no goal awaits confirmation";
     return true;
   }
+  // The relay's callbacks arrive until the driver's goal ends; a goal of ours that was cancelled or replaced
+  // meanwhile (another id, or no longer relaying) ignores them.
   const std::string id = active_.getGoalID().id;
   const auto done = [this, id](const actionlib::SimpleClientGoalState& state, const Result& result) {
     if (phase_ != Phase::Relaying || active_.getGoalID().id != id)
@@ -249,11 +256,16 @@ void ArmActionServer::update(const ros::Time& now)
     ROS_INFO_STREAM(name_ << ": running again; holding the measured pose");
   suspended_ = false;
   updated_ = true;
+  // Real mode: unless a goal is previewed, the virtual arm is where the real one is (the next preview and gate
+  // start there).
   if (real_ && real_->ready() && (phase_ == Phase::Idle || phase_ == Phase::Relaying))
     arm_.adopt(realArm());
   const ArmController::Cycle c = arm_.update(toTime(now));
+  // The phases: Simulating (fake, physics, and real mode's preview) ends in a result, or in real mode waits for
+  // the confirmation; Relaying ends by the driver's result (onConfirm's callbacks) or its disconnection.
   if (phase_ == Phase::Simulating)
   {
+    // feedback at the period asked for, and always with the cycle that ends the goal
     if (c.outcome != ArmController::Outcome::None || last_feedback_.isZero() ||
         (now - last_feedback_).toSec() >= options_.feedback_period - 1e-9)
     {

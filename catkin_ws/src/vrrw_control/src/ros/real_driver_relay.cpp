@@ -1,4 +1,4 @@
-#include <vrrw_control/real_driver_relay.h>
+#include <vrrw_control/ros/real_driver_relay.h>
 
 namespace vrrw_control
 {

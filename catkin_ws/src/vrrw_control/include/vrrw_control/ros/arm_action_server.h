@@ -6,7 +6,7 @@
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 #include <vrrw_control/arm_controller.h>
-#include <vrrw_control/real_driver_relay.h>
+#include <vrrw_control/ros/real_driver_relay.h>
 
 namespace vrrw_control
 {

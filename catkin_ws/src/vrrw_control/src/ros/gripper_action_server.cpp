@@ -1,4 +1,4 @@
-#include <vrrw_control/gripper_action_server.h>
+#include <vrrw_control/ros/gripper_action_server.h>
 
 namespace vrrw_control
 {
@@ -27,6 +27,8 @@ void GripperActionServer::onGoal(GoalHandle gh)
     ROS_WARN_STREAM(ros::this_node::getNamespace() << "/gripper_controller: goal rejected: " << bad);
     return;
   }
+  // one goal at a time, as ros_control's gripper_action_controller: the newest wins and moves on from where the
+  // fingers are commanded now
   if (has_active_)
     active_.setCanceled(control_msgs::GripperCommandResult(), "preempted by a newer goal");
   gh.setAccepted();
@@ -59,6 +61,7 @@ void GripperActionServer::update(const ros::Time& now)
   const auto c = gripper_.update(toTime(now));
   if (!has_active_)
     return;
+  // feedback at the period asked for (1 ns of slack for the clock's rounding), and always with the last cycle
   if (c.done || last_feedback_.isZero() || (now - last_feedback_).toSec() >= feedback_period_ - 1e-9)
   {
     control_msgs::GripperCommandFeedback f;
@@ -76,6 +79,7 @@ void GripperActionServer::update(const ros::Time& now)
   r.effort = c.effort;
   r.stalled = c.stalled;
   r.reached_goal = c.reached_goal;
+  // A stall is how a grasp ends (the fingers closed on an object), so it succeeds unless stalling is not allowed
   if (c.reached_goal || (c.stalled && allow_stalling_))
     active_.setSucceeded(r, c.stalled ? "stalled (fingers closed on an object)" : "");
   else

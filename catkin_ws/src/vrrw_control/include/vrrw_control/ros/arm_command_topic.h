@@ -1,7 +1,7 @@
 #pragma once
 #include <ros/ros.h>
 #include <trajectory_msgs/JointTrajectory.h>
-#include <vrrw_control/arm_action_server.h>
+#include <vrrw_control/ros/arm_action_server.h>
 #include <vrrw_control/arm_controller.h>
 
 namespace vrrw_control

@@ -1,5 +1,6 @@
 #include <urdf_parser/urdf_parser.h>
-#include <vrrw_control/robot_description.h>
+#include <vrrw_control/control_error.h>
+#include <vrrw_control/ros/robot_description.h>
 #include <vrrw_scene/robot_config.h>
 #include <vrrw_scene/scene_loader.h>
 
@@ -11,7 +12,7 @@ RobotDescription fromScene(const vrrw_scene::Scene& scene, const std::string& na
 {
   const auto* robot = scene.robot(name);
   if (!robot)
-    throw std::runtime_error("scene " + scene.name + ": robot " + name + ": not in the scene");
+    throw ControlError("scene " + scene.name + ": robot " + name + ": not in the scene");
   return { scene.urdf, robot->arm_joints, robot->gripper_joints.empty() ? "" : robot->gripper_joints.front(),
            robot->initial_positions, robot->acceleration_limits, robot->fingertip_lever_arm,
            robot->max_grip_force };
@@ -22,7 +23,7 @@ RobotDescription fromParameters(ros::NodeHandle& nh, ros::NodeHandle& pnh, const
   RobotDescription d;
   std::string key;
   if (!nh.searchParam("robot_description", key) || !nh.getParam(key, d.urdf))
-    throw std::runtime_error("robot_description: parameter not set (and no ~scene)");
+    throw ControlError("robot_description: parameter not set (and no ~scene)");
   const std::string p = name + "_";
   d.arm_joints = { p + "shoulder_pan_joint", p + "shoulder_lift_joint", p + "elbow_joint",
                    p + "wrist_1_joint",      p + "wrist_2_joint",       p + "wrist_3_joint" };

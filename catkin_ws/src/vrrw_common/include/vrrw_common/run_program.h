@@ -1,0 +1,24 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace vrrw_common
+{
+/// \brief What a program run by runProgram reads and what of its output is kept.
+struct ProgramStreams
+{
+  const std::string* input = nullptr;  ///< written to its standard input (then closed); none: it reads nothing
+  std::string* output = nullptr;       ///< receives its standard output; none: it goes to ours
+  std::string* errors = nullptr;       ///< receives its standard error; none: it goes to ours (or nowhere, quiet)
+  bool quiet = false;                  ///< an uncaptured standard error goes to /dev/null
+};
+
+/// \brief Runs the program \a argv[0] (searched on PATH) with the arguments exactly as given: no shell, so no
+/// character of a path or name is ever interpreted (`y';touch PWNED;'.png` is one argument). Waits for it;
+/// returns its exit status, -1 when it could not start or died of a signal.
+int runProgram(const std::vector<std::string>& argv, const ProgramStreams& streams);
+
+/// \brief The same with \a output (optional) receiving its standard output; \a quiet sends its standard error
+/// to /dev/null.
+int runProgram(const std::vector<std::string>& argv, std::string* output = nullptr, bool quiet = false);
+}  // namespace vrrw_common
