@@ -195,6 +195,8 @@ def parse_args(argv):
     parser.add_argument('--out', default='demo_report')
     parser.add_argument('--quick', action='store_true', help='3 trials unless --trials says otherwise')
     parser.add_argument('--arms', default='', help='models to try the skill on at the taught arm\'s base, e.g. ur10e,ur3e')
+    parser.add_argument('--rtf', default='max', help="physics' real-time factor: max (lockstep as fast as the cores "
+                        "allow, the default) or a positive number (1: paced at real time)")
     parser.add_argument('--real', metavar='NS', help="relay to the real robot whose driver runs under NS")
     parser.add_argument('--yes', action='store_true', help='--real without asking')
     args = parser.parse_args(argv)
@@ -229,12 +231,14 @@ def main():
     workdir = tempfile.mkdtemp(prefix='vrrw_demo_')
     config = os.path.join(workdir, 'demo.rviz')
     # The workspace launch runs every node on the physics node's simulated time (controllers inside it, in
-    # lockstep); the demonstration is recorded at 100 Hz of simulated time (a viewer gets 50 Hz).
+    # lockstep); the demonstration is recorded at 100 Hz of simulated time (a viewer gets 50 Hz). Physics starts
+    # paused: the runner steps it through every motion, at --rtf.
     launch = os.path.join(workdir, 'demo.launch')
     with open(launch, 'w') as f:
         # the workspace's launch runs vrrw_demos' recorder when it is built (demo_runner records itself otherwise)
         f.write(f'<launch>\n  <include file="{args.launch}"/>\n'
-                f'  <param name="/physics/publish_rate" value="100"/>\n</launch>\n')
+                f'  <param name="/physics/publish_rate" value="100"/>\n  <param name="/physics/paused" value="true"/>\n'
+                f'  <param name="/physics/rtf" value="{args.rtf}"/>\n</launch>\n')
     demo_config(config)
     # VRRW_DISPLAY / VRRW_ROS_PORT pin the display and the master's port (parallel runs on one machine).
     display = int(os.environ.get('VRRW_DISPLAY') or render_scene.free_display())

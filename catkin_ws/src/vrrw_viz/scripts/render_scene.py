@@ -169,7 +169,8 @@ def has_param(name):
 
 
 def wait_for_scene(timeout):
-    """Until robot_description is set and tf holds every link of it; the links."""
+    """Until robot_description is set and tf holds every link of it; the links. Waits on the wall clock: a
+    paused simulation holds ROS time still."""
     import rospy
     import xml.etree.ElementTree as ET
     tf = tf_buffer()
@@ -180,9 +181,10 @@ def wait_for_scene(timeout):
         time.sleep(0.1)
     links = [link.get('name') for link in ET.fromstring(rospy.get_param('/robot_description')).iter('link')]
     for link in links:
-        remaining = max(0.1, deadline - time.monotonic())
-        if not tf.can_transform('world', link, rospy.Time(0), rospy.Duration(remaining)):
-            raise RuntimeError(f'tf never held link {link}')
+        while not tf.can_transform('world', link, rospy.Time(0)):
+            if time.monotonic() > deadline:
+                raise RuntimeError(f'tf never held link {link}')
+            time.sleep(0.02)
     return links
 
 

@@ -96,7 +96,7 @@ bool PickPlaceDemo::resetObject(const Eigen::Isometry3d& pose, std::string& erro
   // Open first: a trial that failed holding the drill must not carry it home nor close on it again.
   if (!client_.grip(options_.grasp.finger_open, 0.0, error) || !goHome(error) || !client_.placeObject(pose, error))
     return false;
-  ros::WallDuration(0.3).sleep();  // the drill settles on the table
+  client_.settle(0.3);  // the drill settles on the table
   return true;
 }
 
@@ -104,7 +104,7 @@ void PickPlaceDemo::capture(const std::string& row, std::size_t boundary, bool f
 {
   if (!frames || options_.capture_command.empty())
     return;
-  ros::WallDuration(0.15).sleep();  // rviz draws the last tf
+  ros::WallDuration(0.15).sleep();  // rviz (10 Hz) draws the state published where the simulation waits
   // the command's words as arguments, the file as one of them: no shell ever reads the --out path
   const std::string file = options_.out + "/frames/" + row + "_" + std::to_string(boundary) + ".png";
   std::istringstream words(options_.capture_command);
@@ -135,7 +135,7 @@ bool PickPlaceDemo::perform(const std::string& row, bool frames, const std::vect
     else
       capture(row, i + 1, frames);
   }
-  ros::WallDuration(0.5).sleep();  // the released drill comes to rest, still recorded
+  client_.settle(0.5);  // the released drill comes to rest, still recorded
   recording = client_.stopRecording();
   writeRecording(row, recording, segments);
   return ok;
@@ -209,7 +209,7 @@ bool PickPlaceDemo::teach(DemoReport& report, std::string& error)
   report.message_counts["/demos/events"] = recording.event_messages;
   report.bag_messages = recording.bag_messages;
   report.bag_file = recording.bag_file;
-  report.teach_source += "; bag by " + recording.recorder;
+  report.teach_source += "; bag by vrrw_demos recorder_node";
   if (!recording.arm_contacts.empty())
     progress("warning: the demonstration touched " + *recording.arm_contacts.begin());
   return true;

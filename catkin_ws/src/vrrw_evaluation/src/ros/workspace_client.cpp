@@ -1,14 +1,13 @@
 #include "workspace_client.h"
 
-#include <vrrw_kinematics/robot_model.h>
-
 #include <tf2_eigen/tf2_eigen.h>
 #include <cstdio>
+#include <stdexcept>
+#include <vrrw_evaluation/trial_outcome.h>
 #include <vrrw_msgs/ComputeIK.h>
 #include <vrrw_msgs/DemoAnnotate.h>
 #include <vrrw_msgs/DemoStart.h>
 #include <vrrw_msgs/DemoStop.h>
-#include <vrrw_msgs/Event.h>
 #include <vrrw_msgs/Plan.h>
 #include <vrrw_physics/SetObjectPose.h>
 #include <vrrw_skills/trial_outcome.h>
@@ -18,6 +17,12 @@ namespace vrrw_evaluation
 namespace
 {
 const std::string kPlace = "/physics/set_object_pose";
+/// Wall seconds this client waits for what a process beside it does at once (take a goal, publish the state
+/// where the simulation stopped): far beyond what it takes on a loaded machine, short of a hang.
+constexpr double kAnswerSeconds = 10.0;
+/// The track's sampling period (simulated s): the top view's and the lift test's 20 Hz.
+constexpr double kTrackPeriod = 0.05;
+
 trajectory_msgs::JointTrajectory toMsg(const vrrw_trajectory::JointTrajectory& trajectory)
 {
   trajectory_msgs::JointTrajectory msg;
@@ -43,36 +48,47 @@ sensor_msgs::JointState jointState(const std::vector<std::string>& names, const 
 }  // namespace
 
 WorkspaceClient::WorkspaceClient(ros::NodeHandle& node, const vrrw_scene::Robot& robot, const std::string& object,
-                                 std::set<std::string> obstacles)
+                                 std::set<std::string> obstacles, vrrw_physics::LockstepClient& sim)
   : robot_(robot)
   , object_(object)
   , obstacles_(std::move(obstacles))
   , node_(node)
+  , sim_(sim)
+  , tf_buffer_(ros::Duration(600.0))  // a run's track is looked up in simulated time that lies up to minutes back
   , tf_listener_(tf_buffer_)
   , arm_("/" + robot.name + "/arm_controller/follow_joint_trajectory", true)
   , gripper_("/" + robot.name + "/gripper_controller/gripper_cmd", true)
   , ik_("/" + robot.name + "/compute_ik")
   , plan_("/" + robot.name + "/plan")
 {
+  // Queues far beyond what one step slice publishes (0.25 s at 100 Hz): nothing is dropped, so every run records
+  // the same messages.
   joint_states_ = node.subscribe("/" + robot.name + "/joint_states", 1000, &WorkspaceClient::onJointStates, this);
-  contacts_ = node.subscribe("/physics/contacts", 100, &WorkspaceClient::onContacts, this);
-  track_timer_ = node.createTimer(ros::Duration(0.05), &WorkspaceClient::onTrackTimer, this);
+  contacts_ = node.subscribe("/physics/contacts", 1000, &WorkspaceClient::onContacts, this);
+  sim_.setCaughtUp([this](const ros::Time& time) { catchUp(time); });
 }
 
 bool WorkspaceClient::waitUntilReady(double seconds, std::string& error)
 {
+  // Every wait here is on the wall clock: ROS time stands still while the simulation waits.
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
-  auto left = [&] { return ros::Duration(std::max(0.01, (deadline - ros::WallTime::now()).toSec())); };
-  if (!arm_.waitForServer(left()) || !gripper_.waitForServer(left()))
+  auto left = [&] { return std::max(0.01, (deadline - ros::WallTime::now()).toSec()); };
+  auto connected = [&] {
+    for (; ros::WallTime::now() < deadline; ros::WallDuration(0.01).sleep())
+      if (arm_.isServerConnected() && gripper_.isServerConnected())
+        return true;
+    return false;
+  };
+  if (!sim_.waitForPhysics(left()))
+    return error = "no physics node (/physics/step): the demo runs in physics mode", false;
+  if (!connected())
     return error = "no controller for " + robot_.name + " (arm_controller / gripper_controller)", false;
-  if (!ros::service::waitForService(ik_, left()) || !ros::service::waitForService(plan_, left()))
+  if (!vrrw_common::PersistentServices::waitFor(ik_, left()) || !vrrw_common::PersistentServices::waitFor(plan_, left()))
     return error = "no planning node (/" + robot_.name + "/compute_ik, /plan)", false;
-  if (!ros::service::waitForService(kPlace, left()))
-    return error = "no physics node (/physics/set_object_pose): the demo runs in physics mode", false;
   std::string urdf;
   if (!node_.getParam("/robot_description", urdf))
     return error = "no /robot_description", false;
-  const auto model = vrrw_kinematics::RobotModel::fromUrdf(urdf);
+  auto model = vrrw_kinematics::RobotModel::fromUrdf(urdf);
   max_velocity_.clear();
   for (const std::string& joint : robot_.arm_joints)
   {
@@ -81,30 +97,57 @@ bool WorkspaceClient::waitUntilReady(double seconds, std::string& error)
       return error = "/robot_description has no joint " + joint, false;
     max_velocity_.push_back(model.joints()[std::size_t(index)].max_velocity);
   }
-  while (ros::WallTime::now() < deadline)
   {
-    if (!armJoints().empty() && lookup(object_) && lookup(robot_.tcp_link))
-    {
-      ready_sim_ = ros::Time::now();
-      ready_wall_ = ros::WallTime::now();
-      return true;
-    }
-    ros::WallDuration(0.05).sleep();
+    std::lock_guard<std::mutex> lock(mutex_);
+    model_ = std::move(model);
   }
-  return error = "no joint_states of " + robot_.name + " or no tf of '" + object_ + "' / " + robot_.tcp_link, false;
+  try
+  {
+    sim_.pause();  // (the workspace starts paused for the demo; a second pause changes nothing)
+    sim_.step(0.001);  // the state where it waits is published again, at a stamp this client has not seen
+  }
+  catch (const std::runtime_error& e)
+  {
+    return error = e.what(), false;
+  }
+  ready_sim_ = sim_.time();
+  ready_wall_ = ros::WallTime::now();
+  return true;
+}
+
+void WorkspaceClient::catchUp(const ros::Time& time)
+{
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kAnswerSeconds);
+  std::unique_lock<std::mutex> lock(mutex_);
+  if (!state_arrived_.wait_until(lock, deadline, [&] { return latest_.header.stamp >= time; }))
+    throw std::runtime_error("/" + robot_.name + "/joint_states: no state at " + std::to_string(time.toSec()) +
+                             " s within " + std::to_string(int(kAnswerSeconds)) + " s of the step's end");
+  lock.unlock();
+  // tf of the object at exactly the stop's stamp: then every earlier one arrived too (one publisher, in order)
+  for (int k = 0; !tf_buffer_.canTransform("world", object_, time); ++k)
+  {
+    if (k >= int(kAnswerSeconds * 1000))
+      throw std::runtime_error("tf: no '" + object_ + "' at " + std::to_string(time.toSec()) + " s");
+    ros::WallDuration(0.001).sleep();
+  }
+  lock.lock();
+  const std::size_t first = recording_data_.track.size() - unresolved_.size();
+  for (std::size_t i = 0; i < unresolved_.size(); ++i)
+    recording_data_.track[first + i].object = lookup(object_, unresolved_[i]).value_or(Eigen::Isometry3d::Identity());
+  unresolved_.clear();
 }
 
 std::vector<double> WorkspaceClient::armJoints()
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  return latest_;
+  return latest_arm_;
 }
 
-std::optional<Eigen::Isometry3d> WorkspaceClient::lookup(const std::string& frame)
+std::optional<Eigen::Isometry3d> WorkspaceClient::lookup(const std::string& frame, const ros::Time& time)
 {
   try
   {
-    return tf2::transformToEigen(tf_buffer_.lookupTransform("world", frame, ros::Time(0)));
+    return tf2::transformToEigen(tf_buffer_.lookupTransform("world", frame, time));
   }
   catch (const tf2::TransformException&)
   {
@@ -114,26 +157,41 @@ std::optional<Eigen::Isometry3d> WorkspaceClient::lookup(const std::string& fram
 
 Eigen::Isometry3d WorkspaceClient::objectPose()
 {
-  return lookup(object_).value_or(Eigen::Isometry3d::Identity());
+  return lookup(object_, sim_.time()).value_or(Eigen::Isometry3d::Identity());
+}
+
+Eigen::Isometry3d WorkspaceClient::linkPose(const sensor_msgs::JointState& state, const std::string& link) const
+{
+  Eigen::VectorXd q = model_->neutralState();
+  for (std::size_t i = 0; i < state.name.size() && i < state.position.size(); ++i)
+    if (const int v = model_->variableIndex(state.name[i]); v >= 0)
+      q[v] = state.position[i];
+  return model_->relativeTransform(q, model_->links()[0].name, link);
 }
 
 Eigen::Isometry3d WorkspaceClient::tcpPose()
 {
-  return lookup(robot_.tcp_link).value_or(Eigen::Isometry3d::Identity());
+  std::lock_guard<std::mutex> lock(mutex_);
+  return linkPose(latest_, robot_.tcp_link);
 }
 
 Eigen::Isometry3d WorkspaceClient::flangePose()
 {
-  return lookup(robot_.tool_link).value_or(Eigen::Isometry3d::Identity());
+  std::lock_guard<std::mutex> lock(mutex_);
+  return linkPose(latest_, robot_.tool_link);
 }
 
 bool WorkspaceClient::execute(const vrrw_trajectory::JointTrajectory& trajectory, std::string& error)
 {
   control_msgs::FollowJointTrajectoryGoal goal;
-  goal.trajectory = toMsg(trajectory);
+  goal.trajectory = toMsg(trajectory);  // stamp zero: it starts where the simulation waits
   arm_.sendGoal(goal);
-  if (!arm_.waitForResult(ros::Duration(trajectory.duration() + 10.0)))
+  if (!vrrw_physics::waitUntilAccepted(arm_, kAnswerSeconds))
+    return arm_.cancelGoal(), error = "the arm controller did not take the goal within 10 s", false;
+  if (!sim_.stepUntilIdle(trajectory.duration() + 10.0))
     return arm_.cancelGoal(), error = "no result within the trajectory's duration + 10 s", false;
+  if (!vrrw_physics::waitUntilDone(arm_, kAnswerSeconds))
+    return error = "the arm controller ended the goal but its result did not arrive", false;
   if (arm_.getState() == actionlib::SimpleClientGoalState::SUCCEEDED)
     return true;
   error = "arm goal " + arm_.getState().toString() + ": " + arm_.getResult()->error_string;
@@ -146,8 +204,12 @@ bool WorkspaceClient::grip(double position, double max_effort, std::string& erro
   goal.command.position = position;
   goal.command.max_effort = max_effort;
   gripper_.sendGoal(goal);
-  if (!gripper_.waitForResult(ros::Duration(10.0)))
+  if (!vrrw_physics::waitUntilAccepted(gripper_, kAnswerSeconds))
+    return gripper_.cancelGoal(), error = "gripper: the controller did not take the goal within 10 s", false;
+  if (!sim_.stepUntilIdle(10.0))
     return gripper_.cancelGoal(), error = "gripper: no result within 10 s", false;
+  if (!vrrw_physics::waitUntilDone(gripper_, kAnswerSeconds))
+    return error = "gripper: the controller ended the goal but its result did not arrive", false;
   if (gripper_.getState() == actionlib::SimpleClientGoalState::SUCCEEDED)
     return true;
   error = "gripper goal " + gripper_.getState().toString() + " " + gripper_.getState().getText();
@@ -210,40 +272,36 @@ bool WorkspaceClient::placeObject(const Eigen::Isometry3d& pose, std::string& er
   srv.request.pose = tf2::toMsg(pose);
   if (!links_.tryCall(kPlace, srv) || !srv.response.success)
     return error = "set_object_pose: " + srv.response.message, false;
-  for (int i = 0; i < 100; ++i)
-  {
-    if ((objectPose().translation() - pose.translation()).norm() < 0.01)
-      return true;
-    ros::WallDuration(0.02).sleep();
-  }
-  return error = "tf never showed " + object_ + " where set_object_pose put it", false;
+  sim_.step(0.001);
+  return true;
+}
+
+void WorkspaceClient::settle(double seconds)
+{
+  sim_.step(seconds);
 }
 
 void WorkspaceClient::startRecording(const std::string& bag_file)
 {
-  demos_recording_ = false;
   if (!bag_file.empty())
   {
     std::remove(bag_file.c_str());  // the report's own bag of an earlier run (vrrw_demos never overwrites)
     vrrw_msgs::DemoStart start;
     start.request.file = bag_file;
     start.request.robots = { robot_.name };
-    const bool recorder = ros::service::waitForService("/demos/start", ros::Duration(3.0));
-    demos_recording_ = recorder && links_.tryCall("/demos/start", start) && start.response.success;
-    if (recorder && !demos_recording_)
-      ROS_WARN_STREAM("/demos/start: " << start.response.message << "; recording with demo_runner's own bag");
+    std::string why;
+    if (!links_.tryCall("/demos/start", start, &why))
+      throw std::runtime_error(why + ": the demonstration is recorded by vrrw_demos' recorder_node");
+    if (!start.response.success)
+      throw std::runtime_error("/demos/start: " + start.response.message);
+    demos_recording_ = true;
   }
   std::lock_guard<std::mutex> lock(mutex_);
   recording_data_ = Recording();
   recording_data_.bag_file = bag_file;
-  recording_data_.recorder = demos_recording_ ? "vrrw_demos recorder_node" : "demo_runner";
-  if (!bag_file.empty() && !demos_recording_)
-  {
-    bag_.open(bag_file, rosbag::bagmode::Write);
-    bag_open_ = true;
-  }
   recording_data_.arm.joint_names = robot_.arm_joints;
-  record_start_ = ros::Time::now();
+  record_start_ = next_sample_ = sim_.time();
+  unresolved_.clear();
   recording_ = true;
 }
 
@@ -262,50 +320,36 @@ Recording WorkspaceClient::stopRecording()
   std::lock_guard<std::mutex> lock(mutex_);
   recording_ = false;
   recording_data_.bag_messages = demos_messages;
-  recording_data_.seconds = (ros::Time::now() - record_start_).toSec();
+  recording_data_.seconds = (sim_.time() - record_start_).toSec();
   recording_data_.start_stamp = record_start_.toSec();
-  if (bag_open_)
-  {
-    recording_data_.bag_messages =
-        recording_data_.joint_state_messages + recording_data_.contact_messages + recording_data_.event_messages;
-    bag_.close();
-  }
-  bag_open_ = false;
   return std::move(recording_data_);
 }
 
 void WorkspaceClient::annotate(const std::string& kind, const std::string& detail)
 {
-  vrrw_msgs::Event event;
-  event.header.stamp = ros::Time::now();
-  event.source = "demo_script";
-  event.robot = robot_.name;
-  event.kind = kind;
-  event.detail = detail;
-  if (demos_recording_)
   {
-    vrrw_msgs::DemoAnnotate annotate;
-    annotate.request.stamp = event.header.stamp;  // the bag's event at the instant the runner's clock says
-    annotate.request.text = kind + " " + detail;
-    links_.tryCall("/demos/annotate", annotate);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!recording_)
+      return;
+    ++recording_data_.event_messages;
   }
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!recording_)
+  if (!demos_recording_)
     return;
-  ++recording_data_.event_messages;
-  if (!bag_open_)
-    return;
-  bag_.write("/demos/events", event.header.stamp, event);
+  vrrw_msgs::DemoAnnotate annotate;
+  annotate.request.stamp = sim_.time();  // the bag's event where the simulation waits
+  annotate.request.text = kind + " " + detail;
+  links_.tryCall("/demos/annotate", annotate);
 }
 
 double WorkspaceClient::recordingTime() const
 {
-  return (ros::Time::now() - record_start_).toSec();
+  std::lock_guard<std::mutex> lock(mutex_);
+  return (sim_.time() - record_start_).toSec();
 }
 
 double WorkspaceClient::realTimeFactor() const
 {
-  return (ros::Time::now() - ready_sim_).toSec() / std::max(1e-9, (ros::WallTime::now() - ready_wall_).toSec());
+  return (sim_.time() - ready_sim_).toSec() / std::max(1e-9, (ros::WallTime::now() - ready_wall_).toSec());
 }
 
 void WorkspaceClient::onJointStates(const sensor_msgs::JointState::ConstPtr& msg)
@@ -320,14 +364,25 @@ void WorkspaceClient::onJointStates(const sensor_msgs::JointState::ConstPtr& msg
       }
   if (q.size() != robot_.arm_joints.size())
     return;
-  std::lock_guard<std::mutex> lock(mutex_);
-  latest_ = q;
-  if (!recording_)
-    return;
-  ++recording_data_.joint_state_messages;
-  if (bag_open_)
-    bag_.write("/" + robot_.name + "/joint_states", msg->header.stamp, *msg);
-  recording_data_.arm.points.push_back({ (msg->header.stamp - record_start_).toSec(), q, qd, {} });
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    latest_ = *msg;
+    latest_arm_ = q;
+    if (recording_)
+    {
+      ++recording_data_.joint_state_messages;
+      recording_data_.arm.points.push_back({ (msg->header.stamp - record_start_).toSec(), q, qd, {} });
+      if (msg->header.stamp >= next_sample_)
+      {
+        // the TCP now; the object once its tf at this stamp has arrived (catchUp)
+        recording_data_.track.push_back({ (msg->header.stamp - record_start_).toSec(),
+                                          linkPose(*msg, robot_.tcp_link).translation(), Eigen::Isometry3d::Identity() });
+        unresolved_.push_back(msg->header.stamp);
+        next_sample_ = msg->header.stamp + ros::Duration(kTrackPeriod);
+      }
+    }
+  }
+  state_arrived_.notify_all();
 }
 
 void WorkspaceClient::onContacts(const vrrw_physics::Contacts::ConstPtr& msg)
@@ -336,19 +391,8 @@ void WorkspaceClient::onContacts(const vrrw_physics::Contacts::ConstPtr& msg)
   if (!recording_)
     return;
   ++recording_data_.contact_messages;
-  if (bag_open_)
-    bag_.write("/physics/contacts", msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp, *msg);
   for (const auto& c : msg->contacts)
     if (vrrw_skills::isArmCollision(c.body_a, c.body_b, robot_.name, obstacles_))
       recording_data_.arm_contacts.insert(c.body_a + "|" + c.body_b);
-}
-
-void WorkspaceClient::onTrackTimer(const ros::TimerEvent&)
-{
-  const auto tcp = lookup(robot_.tcp_link);
-  const auto object = lookup(object_);
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (recording_ && tcp && object)
-    recording_data_.track.push_back({ (ros::Time::now() - record_start_).toSec(), tcp->translation(), *object });
 }
 }  // namespace vrrw_evaluation
