@@ -87,7 +87,7 @@ int main(int argc, char** argv)
     {
       ok = run();
     }
-    catch (const std::runtime_error& e)  // the simulation or a recorder that failed under the stage
+    catch (const std::exception& e)  // the simulation, a recorder or the skill trials failed under the stage
     {
       error = e.what();
     }

@@ -2,9 +2,10 @@
 """./vrrw demo: the paper's evaluation end to end, headless, with its own master under Xvfb.
 
   run_demo.py --launch WORKSPACE.launch --scene S [--trials N] [--seed S] [--out DIR] [--quick] [--arms A,B]
-              [--real NS [--yes]]
+              [--rtf max|N] [--real NS [--yes]]
 
-Brings the workspace up in physics mode with rviz on a private display, runs demo_runner (teach,
+Brings the workspace up in physics mode (paused, at real-time factor --rtf: max by default) with rviz on a private
+display, runs demo_runner (it holds the simulation and steps it through every motion: lockstep; teach,
 segment, replay, generalize: the skill learned from the bag and its trials; it saves rviz frames at the
 instruction boundaries), then draws the plots and frame strips beside the runner's metrics.json, report.md and
 index.html. With --arms, the same trials of the same skill on each of those arms at the taught arm's base
@@ -114,7 +115,7 @@ def other_arms(args, robot, trials, out):
         log(f'arms: {arm} at the {robot}\'s base, {trials} trials (skill evaluate, log in {folder})')
         result = subprocess.run([os.path.join(ROOT, 'vrrw'), 'skill', 'evaluate', os.path.join(out, 'skill.yaml'),
                                  '--scene', scene, '--robot', arm, '--trials', str(trials), '--seed', str(args.seed),
-                                 '--out', folder], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                                 '--out', folder, '--rtf', args.rtf], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         with open(os.path.join(folder, 'evaluate.log'), 'w') as f:
             f.write(result.stdout)
         try:
@@ -200,6 +201,8 @@ def parse_args(argv):
     parser.add_argument('--real', metavar='NS', help="relay to the real robot whose driver runs under NS")
     parser.add_argument('--yes', action='store_true', help='--real without asking')
     args = parser.parse_args(argv)
+    if not re.fullmatch(r'max|(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?', args.rtf) or (args.rtf != 'max' and float(args.rtf) <= 0):
+        parser.error(f"--rtf: '{args.rtf}' is not max or a positive number (the real-time factor; 1: paced at real time)")
     if args.trials is None:
         args.trials = 3 if args.quick else 20
     return args

@@ -3,7 +3,6 @@
 #include <tf2_eigen/tf2_eigen.h>
 #include <cstdio>
 #include <stdexcept>
-#include <vrrw_evaluation/trial_outcome.h>
 #include <vrrw_msgs/ComputeIK.h>
 #include <vrrw_msgs/DemoAnnotate.h>
 #include <vrrw_msgs/DemoStart.h>
@@ -65,7 +64,12 @@ WorkspaceClient::WorkspaceClient(ros::NodeHandle& node, const vrrw_scene::Robot&
   // the same messages.
   joint_states_ = node.subscribe("/" + robot.name + "/joint_states", 1000, &WorkspaceClient::onJointStates, this);
   contacts_ = node.subscribe("/physics/contacts", 1000, &WorkspaceClient::onContacts, this);
-  sim_.setCaughtUp([this](const ros::Time& time) { catchUp(time); });
+  stop_observer_ = sim_.addStopObserver([this](const ros::Time& time) { catchUp(time); });
+}
+
+WorkspaceClient::~WorkspaceClient()
+{
+  sim_.removeStopObserver(stop_observer_);
 }
 
 bool WorkspaceClient::waitUntilReady(double seconds, std::string& error)
@@ -122,6 +126,9 @@ void WorkspaceClient::catchUp(const ros::Time& time)
   if (!state_arrived_.wait_until(lock, deadline, [&] { return latest_.header.stamp >= time; }))
     throw std::runtime_error("/" + robot_.name + "/joint_states: no state at " + std::to_string(time.toSec()) +
                              " s within " + std::to_string(int(kAnswerSeconds)) + " s of the step's end");
+  if (!contacts_arrived_.wait_until(lock, deadline, [&] { return contacts_stamp_ >= time; }))
+    throw std::runtime_error("/physics/contacts: none at " + std::to_string(time.toSec()) + " s within " +
+                             std::to_string(int(kAnswerSeconds)) + " s of the step's end");
   lock.unlock();
   // tf of the object at exactly the stop's stamp: then every earlier one arrived too (one publisher, in order)
   for (int k = 0; !tf_buffer_.canTransform("world", object_, time); ++k)
@@ -368,7 +375,7 @@ void WorkspaceClient::onJointStates(const sensor_msgs::JointState::ConstPtr& msg
     std::lock_guard<std::mutex> lock(mutex_);
     latest_ = *msg;
     latest_arm_ = q;
-    if (recording_)
+    if (recording_ && msg->header.stamp > record_start_)  // (the state where it started arrived before it)
     {
       ++recording_data_.joint_state_messages;
       recording_data_.arm.points.push_back({ (msg->header.stamp - record_start_).toSec(), q, qd, {} });
@@ -387,12 +394,18 @@ void WorkspaceClient::onJointStates(const sensor_msgs::JointState::ConstPtr& msg
 
 void WorkspaceClient::onContacts(const vrrw_physics::Contacts::ConstPtr& msg)
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!recording_)
-    return;
-  ++recording_data_.contact_messages;
-  for (const auto& c : msg->contacts)
-    if (vrrw_skills::isArmCollision(c.body_a, c.body_b, robot_.name, obstacles_))
-      recording_data_.arm_contacts.insert(c.body_a + "|" + c.body_b);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    contacts_stamp_ = std::max(contacts_stamp_, msg->header.stamp);
+    // after the recording's start only: the message published where it started may arrive after it
+    if (recording_ && msg->header.stamp > record_start_)
+    {
+      ++recording_data_.contact_messages;
+      for (const auto& c : msg->contacts)
+        if (vrrw_skills::isArmCollision(c.body_a, c.body_b, robot_.name, obstacles_))
+          recording_data_.arm_contacts.insert(c.body_a + "|" + c.body_b);
+    }
+  }
+  contacts_arrived_.notify_all();
 }
 }  // namespace vrrw_evaluation

@@ -53,6 +53,9 @@ public:
   /// \brief `sim`: the hold on the physics node every motion is stepped through.
   WorkspaceClient(ros::NodeHandle& node, const vrrw_scene::Robot& robot, const std::string& object,
                   std::set<std::string> obstacles, vrrw_physics::LockstepClient& sim);
+  ~WorkspaceClient();
+  WorkspaceClient(const WorkspaceClient&) = delete;
+  WorkspaceClient& operator=(const WorkspaceClient&) = delete;
 
   /// \brief Waits for the controllers, services, joint_states and the object's tf, then holds the simulation
   /// (every motion from here on is stepped); false with `error`.
@@ -116,6 +119,7 @@ private:
   std::set<std::string> obstacles_;
   ros::NodeHandle& node_;
   vrrw_physics::LockstepClient& sim_;
+  int stop_observer_ = -1;  ///< catchUp() among sim_'s stop observers
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> arm_;
@@ -128,6 +132,8 @@ private:
 
   mutable std::mutex mutex_;  ///< protects what the subscriber callbacks write, below
   std::condition_variable state_arrived_;  ///< a joint_states message arrived
+  std::condition_variable contacts_arrived_;  ///< a contacts message arrived
+  ros::Time contacts_stamp_;               ///< PROTECTED BY mutex_: the latest contacts message's stamp
   sensor_msgs::JointState latest_;         ///< PROTECTED BY mutex_: the robot's last joint_states
   std::vector<double> latest_arm_;         ///< PROTECTED BY mutex_: its arm joints, in arm_joints order
   std::optional<vrrw_kinematics::RobotModel> model_;  ///< PROTECTED BY mutex_: the URDF, set by waitUntilReady()

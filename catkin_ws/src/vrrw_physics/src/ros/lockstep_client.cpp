@@ -51,6 +51,18 @@ void LockstepClient::unpause()
   }
 }
 
+int LockstepClient::addStopObserver(StopObserver observer)
+{
+  observers_.emplace_back(next_key_, std::move(observer));
+  return next_key_++;
+}
+
+void LockstepClient::removeStopObserver(int key)
+{
+  observers_.erase(std::remove_if(observers_.begin(), observers_.end(), [key](const auto& o) { return o.first == key; }),
+                   observers_.end());
+}
+
 ros::Time LockstepClient::now()
 {
   call(0.0, false);
@@ -93,8 +105,9 @@ bool LockstepClient::call(double seconds, bool until_idle)
   if (!srv.response.success)
     throw LockstepError(name + ": " + srv.response.message);
   time_ = srv.response.time;
-  if (caught_up_ && srv.response.steps > 0)
-    caught_up_(time_);
+  if (srv.response.steps > 0)
+    for (const auto& observer : observers_)
+      observer.second(time_);
   return srv.response.idle;
 }
 }  // namespace vrrw_physics

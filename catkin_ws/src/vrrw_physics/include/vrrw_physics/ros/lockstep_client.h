@@ -5,6 +5,8 @@
 #include <ros/ros.h>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <vrrw_common/ros/persistent_service.h>
 
@@ -50,9 +52,12 @@ public:
   /// \brief Advances until every controller of the physics node is idle (no goal active), at least one step and
   /// at most `seconds`; true when they are idle.
   bool stepUntilIdle(double seconds);
-  /// \brief Called after every stop with the simulated time reached, before step() goes on or returns: e.g. a
-  /// wait until a subscriber has the state published there (the exact state at every stop, latched).
-  void setCaughtUp(std::function<void(const ros::Time&)> caught_up) { caught_up_ = std::move(caught_up); }
+  using StopObserver = std::function<void(const ros::Time&)>;
+  /// \brief `observer` is called after every stop with the simulated time reached, before step() goes on or
+  /// returns, in the order the observers were added: e.g. a wait until a subscriber has the state published
+  /// there (the exact state at every stop), then samples taken from it. Returns its key for removeStopObserver.
+  int addStopObserver(StopObserver observer);
+  void removeStopObserver(int key);
   /// \brief The simulated time of the last answer.
   ros::Time time() const { return time_; }
 
@@ -63,7 +68,8 @@ private:
   vrrw_common::PersistentServices& services_;
   std::string physics_;
   LockstepOptions options_;
-  std::function<void(const ros::Time&)> caught_up_;
+  std::vector<std::pair<int, StopObserver>> observers_;  ///< by key, in the order added
+  int next_key_ = 0;
   ros::Time time_;
 };
 
