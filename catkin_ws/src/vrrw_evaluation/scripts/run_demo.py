@@ -261,7 +261,8 @@ def main():
             processes.append(subprocess.Popen(['rviz', '-d', config], env=env, stdout=f, stderr=subprocess.STDOUT,
                                               start_new_session=True))
         try:
-            render_scene.wait_for_scene(60.0)
+            # the description only: physics waits paused, so tf has the robot once the runner's first step published it
+            render_scene.wait_for_description(60.0)
         except RuntimeError as error:
             sys.exit(f'demo: {error} (see {launch_log})')
         log(f'workspace up after {time.monotonic() - start:.1f} s')

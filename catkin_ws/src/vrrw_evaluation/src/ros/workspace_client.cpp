@@ -105,10 +105,16 @@ bool WorkspaceClient::waitUntilReady(double seconds, std::string& error)
     std::lock_guard<std::mutex> lock(mutex_);
     model_ = std::move(model);
   }
+  // Physics published its paused start once, before anyone listened: the first step publishes the state where it
+  // waits again, once this client's subscribers are connected (tf's listener connects beside them: a second more).
+  for (; joint_states_.getNumPublishers() == 0 || contacts_.getNumPublishers() == 0; ros::WallDuration(0.01).sleep())
+    if (ros::WallTime::now() > deadline)
+      return error = "no /" + robot_.name + "/joint_states or /physics/contacts from the physics node", false;
+  ros::WallDuration(1.0).sleep();
   try
   {
     sim_.pause();  // (the workspace starts paused for the demo; a second pause changes nothing)
-    sim_.step(0.001);  // the state where it waits is published again, at a stamp this client has not seen
+    sim_.step(0.001);
   }
   catch (const std::runtime_error& e)
   {
