@@ -43,7 +43,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const vrrw_s
   for (const std::string& robot : world_.robotNames())
     robot_states_.push_back(nh.advertise<sensor_msgs::JointState>(robot + "/joint_states", 100, true));
   all_states_ = nh.advertise<sensor_msgs::JointState>("joint_states", 100, true);
-  contacts_ = pnh.advertise<Contacts>("contacts", 10);
+  contacts_ = pnh.advertise<Contacts>("contacts", 100);  // a lockstep client's step slice (0.25 s) in a burst, none dropped
   errors_ = pnh.advertise<std_msgs::String>("errors", 10, true);
   clock_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10, true);
   subscribers_.push_back(pnh.subscribe("hand", 100, &PhysicsNode::onHand, this));
