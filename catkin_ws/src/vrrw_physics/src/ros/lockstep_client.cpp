@@ -88,11 +88,30 @@ bool LockstepClient::stepUntilIdle(double seconds)
   return false;
 }
 
+bool LockstepClient::paused()
+{
+  vrrw_physics::Step srv;
+  try
+  {
+    services_.call(physics_ + "/step", srv, kCallSeconds);
+  }
+  catch (const vrrw_common::ServiceError& e)
+  {
+    throw LockstepError(e.what());
+  }
+  if (srv.response.success)
+    return time_ = srv.response.time, true;
+  if (srv.response.message.find("the simulation runs") != std::string::npos)
+    return false;
+  throw LockstepError(physics_ + "/step: " + srv.response.message);
+}
+
 bool LockstepClient::call(double seconds, bool until_idle)
 {
   vrrw_physics::Step srv;
   srv.request.duration = seconds;
   srv.request.until_idle = until_idle;
+  srv.request.rtf = options_.rtf;
   const std::string name = physics_ + "/step";
   try
   {

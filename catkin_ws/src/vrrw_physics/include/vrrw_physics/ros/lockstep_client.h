@@ -26,6 +26,9 @@ struct LockstepOptions
   /// queue holds at most this much of the viewer-rate states (0.25 s at 100 Hz: 25 joint_states, about 60 tf
   /// messages, under tf2_ros' queue of 100)
   double slice = 0.25;
+  /// the real-time factor of every step request: 0 the physics node's own (~rtf), a positive number, or infinity
+  /// (as fast as the cores allow)
+  double rtf = 0.0;
 };
 
 /// \brief Holds the simulation (pause) and advances it (step): the client acts while the simulation waits
@@ -45,6 +48,9 @@ public:
   void pause();
   /// \brief Lets it run on at its real-time factor.
   void unpause();
+  /// \brief Whether the simulation is paused (a step request of 0 s is refused while it runs); throws
+  /// LockstepError when another client's step request is running.
+  bool paused();
   /// \brief The simulated time while it waits (no step).
   ros::Time now();
   /// \brief Advances `seconds` of simulated time (whole steps, in slices); the time reached.
