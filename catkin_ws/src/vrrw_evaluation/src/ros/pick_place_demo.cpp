@@ -19,6 +19,11 @@ namespace vrrw_evaluation
 {
 namespace
 {
+/// Simulated s the operator rests between two instructions of the teach. Paced, the script's own calls took about
+/// this long; in lockstep they take no simulated time, and the skill learner's keyframe rule finds an instruction's
+/// end where the arm rests (without the rest it ran the lift on into the carry).
+constexpr double kOperatorPause = 0.4;
+
 void progress(const std::string& line)
 {
   std::printf("demo: %s\n", line.c_str());
@@ -134,6 +139,8 @@ bool PickPlaceDemo::perform(const std::string& row, bool frames, const std::vect
       error = kInstructions[i] + ": " + error;
     else
       capture(row, i + 1, frames);
+    if (ok && row == "demonstration" && i + 1 < instructions.size())
+      client_.settle(kOperatorPause);
   }
   client_.settle(0.5);  // the released drill comes to rest, still recorded
   recording = client_.stopRecording();
