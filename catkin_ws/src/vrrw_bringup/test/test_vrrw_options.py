@@ -54,6 +54,9 @@ class Refusals(unittest.TestCase):
         self.refused('vrrw: demo: --quick: takes no value', 'demo', '--quick=yes')
         self.refused("vrrw: demo: unexpected argument 'extra'", 'demo', 'extra')
         self.refused('vrrw: demo: --yes confirms --real NS, which was not given', 'demo', '--yes')
+        for rtf in ('0', '-1', 'nan', 'fast'):
+            self.refused(f"vrrw: demo: --rtf: '{rtf}' is not max or a positive number (the real-time factor; 1: "
+                         "paced at real time)", 'demo', '--out', out, '--rtf', rtf)
         self.assertTrue(os.path.isdir(os.path.join(out, 'frames')))
         with open(os.path.join(out, 'workspace.log')) as f:
             self.assertEqual(f.read(), 'an earlier run\n')

@@ -3,7 +3,8 @@
 //   import CSV --bag FILE --robot R [--gripper-joint J]
 //   segment BAG [--out FILE.yaml]                          the pick-and-place instructions, YAML + table
 //   plot BAG --out FILE.png [--robot R]                    joints, gripper and segment boundaries
-//   replay BAG --mode fake|physics|real [--robot R] [--segment NAME] [--speed S] [--tolerance RAD] [--yes]
+//   replay BAG --mode fake|physics|real [--robot R] [--segment NAME] [--speed S] [--tolerance RAD] [--rtf max|N]
+//          [--yes]                                         physics: in lockstep (held, stepped at --rtf)
 //   record --out FILE.bag [--robots a,b] [--wait S]        with the workspace's recorder until Ctrl-C
 // Exit codes: 0 done, 1 a failure while running (a goal failed, a recording stopped, no workspace runs), 2 bad
 // input or usage (one line on stderr naming the file, topic, option or field; nothing was written or sent).

@@ -60,17 +60,20 @@ int main(int argc, char** argv)
   ros::NodeHandle node;
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  WorkspaceClient client(node, cell.robot, cell.object, cell.obstacles);
+  // The runner holds the simulation and steps it through every motion (lockstep): the same seed moves the same way.
+  vrrw_common::PersistentServices links;
+  vrrw_physics::LockstepClient sim(links);
+  WorkspaceClient client(node, cell.robot, cell.object, cell.obstacles, sim);
   if (!client.waitUntilReady(60.0, error))
     return spinner.stop(), std::cerr << "demo: " << error << "\n", 1;
   DemoReport report;
   report.scene = scene;
   report.seed = options.seed;
   // The teach stage is an operator's: ghost-drive through the interaction node.
-  GhostOperator ghost(node, cell.robot.name);
+  GhostOperator ghost(node, cell.robot.name, sim);
   if (!ghost.waitUntilReady(10.0, error))
     return spinner.stop(), std::cerr << "demo: " << error << ": the teach stage needs the ghost services\n", 1;
-  HandOperator hand(node, cell.robot.name);
+  HandOperator hand(node, cell.robot.name, sim);
   if (!hand.waitUntilReady(10.0, error))
     return spinner.stop(), std::cerr << "demo: " << error << ": the teach stage needs free-drive\n", 1;
   options.table = cell.table;
@@ -79,7 +82,15 @@ int main(int argc, char** argv)
     std::printf("demo: %s ...\n", name);
     std::fflush(stdout);
     const auto stage_start = std::chrono::steady_clock::now();
-    const bool ok = run();
+    bool ok = false;
+    try
+    {
+      ok = run();
+    }
+    catch (const std::exception& e)  // the simulation, a recorder or the skill trials failed under the stage
+    {
+      error = e.what();
+    }
     report.stage_seconds[name] = secondsSince(stage_start);
     std::printf("demo: %s %s in %.1f s\n", name, ok ? "done" : "FAILED", report.stage_seconds[name]);
     return ok;
@@ -102,6 +113,7 @@ int main(int argc, char** argv)
     });
   report.physics_rtf = client.realTimeFactor();
   report.wall_seconds = secondsSince(start);
+
   spinner.stop();  // no callback may run into the client while it is destroyed
   if (!ok)
     std::cerr << "demo: " << error << "\n";

@@ -2,9 +2,10 @@
 """./vrrw demo: the paper's evaluation end to end, headless, with its own master under Xvfb.
 
   run_demo.py --launch WORKSPACE.launch --scene S [--trials N] [--seed S] [--out DIR] [--quick] [--arms A,B]
-              [--real NS [--yes]]
+              [--rtf max|N] [--real NS [--yes]]
 
-Brings the workspace up in physics mode with rviz on a private display, runs demo_runner (teach,
+Brings the workspace up in physics mode (paused, at real-time factor --rtf: max by default) with rviz on a private
+display, runs demo_runner (it holds the simulation and steps it through every motion: lockstep; teach,
 segment, replay, generalize: the skill learned from the bag and its trials; it saves rviz frames at the
 instruction boundaries), then draws the plots and frame strips beside the runner's metrics.json, report.md and
 index.html. With --arms, the same trials of the same skill on each of those arms at the taught arm's base
@@ -114,7 +115,7 @@ def other_arms(args, robot, trials, out):
         log(f'arms: {arm} at the {robot}\'s base, {trials} trials (skill evaluate, log in {folder})')
         result = subprocess.run([os.path.join(ROOT, 'vrrw'), 'skill', 'evaluate', os.path.join(out, 'skill.yaml'),
                                  '--scene', scene, '--robot', arm, '--trials', str(trials), '--seed', str(args.seed),
-                                 '--out', folder], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                                 '--out', folder, '--rtf', args.rtf], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         with open(os.path.join(folder, 'evaluate.log'), 'w') as f:
             f.write(result.stdout)
         try:
@@ -195,9 +196,13 @@ def parse_args(argv):
     parser.add_argument('--out', default='demo_report')
     parser.add_argument('--quick', action='store_true', help='3 trials unless --trials says otherwise')
     parser.add_argument('--arms', default='', help='models to try the skill on at the taught arm\'s base, e.g. ur10e,ur3e')
+    parser.add_argument('--rtf', default='max', help="physics' real-time factor: max (lockstep as fast as the cores "
+                        "allow, the default) or a positive number (1: paced at real time)")
     parser.add_argument('--real', metavar='NS', help="relay to the real robot whose driver runs under NS")
     parser.add_argument('--yes', action='store_true', help='--real without asking')
     args = parser.parse_args(argv)
+    if not re.fullmatch(r'max|(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?', args.rtf) or (args.rtf != 'max' and float(args.rtf) <= 0):
+        parser.error(f"--rtf: '{args.rtf}' is not max or a positive number (the real-time factor; 1: paced at real time)")
     if args.trials is None:
         args.trials = 3 if args.quick else 20
     return args
@@ -229,12 +234,14 @@ def main():
     workdir = tempfile.mkdtemp(prefix='vrrw_demo_')
     config = os.path.join(workdir, 'demo.rviz')
     # The workspace launch runs every node on the physics node's simulated time (controllers inside it, in
-    # lockstep); the demonstration is recorded at 100 Hz of simulated time (a viewer gets 50 Hz).
+    # lockstep); the demonstration is recorded at 100 Hz of simulated time (a viewer gets 50 Hz). Physics starts
+    # paused: the runner steps it through every motion, at --rtf.
     launch = os.path.join(workdir, 'demo.launch')
     with open(launch, 'w') as f:
         # the workspace's launch runs vrrw_demos' recorder, the demonstration's one bag writer
         f.write(f'<launch>\n  <include file="{args.launch}"/>\n'
-                f'  <param name="/physics/publish_rate" value="100"/>\n</launch>\n')
+                f'  <param name="/physics/publish_rate" value="100"/>\n  <param name="/physics/paused" value="true"/>\n'
+                f'  <param name="/physics/rtf" value="{args.rtf}"/>\n</launch>\n')
     demo_config(config)
     # VRRW_DISPLAY / VRRW_ROS_PORT pin the display and the master's port (parallel runs on one machine).
     display = int(os.environ.get('VRRW_DISPLAY') or render_scene.free_display())
@@ -254,7 +261,8 @@ def main():
             processes.append(subprocess.Popen(['rviz', '-d', config], env=env, stdout=f, stderr=subprocess.STDOUT,
                                               start_new_session=True))
         try:
-            render_scene.wait_for_scene(60.0)
+            # the description only: physics waits paused, so tf has the robot once the runner's first step published it
+            render_scene.wait_for_description(60.0)
         except RuntimeError as error:
             sys.exit(f'demo: {error} (see {launch_log})')
         log(f'workspace up after {time.monotonic() - start:.1f} s')

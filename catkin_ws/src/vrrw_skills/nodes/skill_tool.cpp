@@ -2,7 +2,7 @@
 //   learn BAG [BAG...] --object NAME [--robot R] [--place-on NAME] --out SKILL.yaml
 //   run SKILL.yaml [--robot R] [--object NAME] [--yes]
 //   evaluate SKILL.yaml --scene SCENE [--robot R] [--object NAME] [--trials N] [--seed S]
-//            [--spread DX,DY,DYAW_DEG] [--out DIR]
+//            [--spread DX,DY,DYAW_DEG] [--out DIR] [--rtf max|N]
 // Exit codes: 0 done, 1 failed while running (a refusal, a failed goal), 2 bad input (one line on stderr).
 #include <iostream>
 #include <string>
@@ -22,7 +22,7 @@ const char* const kUsage =
     "usage: ./vrrw skill learn BAG [BAG...] --object NAME [--robot R] [--place-on NAME] --out SKILL.yaml\n"
     "       ./vrrw skill run SKILL.yaml [--robot R] [--object NAME] [--yes]\n"
     "       ./vrrw skill evaluate SKILL.yaml --scene SCENE [--robot R] [--object NAME] [--trials N] [--seed S]\n"
-    "                             [--spread DX,DY,DYAW_DEG] [--out DIR]\n";
+    "                             [--spread DX,DY,DYAW_DEG] [--out DIR] [--rtf max|N]\n";
 }  // namespace
 
 int main(int argc, char** argv)

@@ -72,6 +72,9 @@ class SkillToolBadInput(unittest.TestCase):
         self.refuse(['evaluate', self.skill, '--scene', BOX_CELL, '--spread', '0.1,-0.1,30', '--out', out],
                     '--spread')
         self.refuse(['evaluate', self.skill, '--scene', BOX_CELL, '--spread', '0.1,0.1', '--out', out], '--spread')
+        for rtf in ('0', '-2', 'nan', 'fast'):
+            self.refuse(['evaluate', self.skill, '--scene', BOX_CELL, '--rtf', rtf, '--out', out],
+                        f"--rtf: '{rtf}' is not max or a positive number (the real-time factor)")
         self.assertFalse(os.path.exists(out))
 
     def test_evaluate_refuses_a_port_in_use(self):

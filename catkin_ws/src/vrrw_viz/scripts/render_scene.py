@@ -168,21 +168,30 @@ def has_param(name):
         return False
 
 
-def wait_for_scene(timeout):
-    """Until robot_description is set and tf holds every link of it; the links."""
+def wait_for_description(timeout):
+    """Until robot_description is set (wall clock); its links."""
     import rospy
     import xml.etree.ElementTree as ET
-    tf = tf_buffer()
     deadline = time.monotonic() + timeout
     while not has_param('/robot_description'):
         if time.monotonic() > deadline:
             raise RuntimeError('robot_description never appeared (did the scene load? see the log above)')
         time.sleep(0.1)
-    links = [link.get('name') for link in ET.fromstring(rospy.get_param('/robot_description')).iter('link')]
+    return [link.get('name') for link in ET.fromstring(rospy.get_param('/robot_description')).iter('link')]
+
+
+def wait_for_scene(timeout):
+    """Until robot_description is set and tf holds every link of it; the links. Waits on the wall clock: a
+    paused simulation holds ROS time still."""
+    import rospy
+    tf = tf_buffer()
+    deadline = time.monotonic() + timeout
+    links = wait_for_description(timeout)
     for link in links:
-        remaining = max(0.1, deadline - time.monotonic())
-        if not tf.can_transform('world', link, rospy.Time(0), rospy.Duration(remaining)):
-            raise RuntimeError(f'tf never held link {link}')
+        while not tf.can_transform('world', link, rospy.Time(0)):
+            if time.monotonic() > deadline:
+                raise RuntimeError(f'tf never held link {link}')
+            time.sleep(0.02)
     return links
 
 

@@ -1,7 +1,8 @@
 // `vrrw demos replay BAG --mode fake|physics|real ...`: a recorded track through the running controllers.
 // Stages: read and check the request and the bag; read the running robot's limits; build and check the
 // whole replay (nothing is sent before all of it passed); the approach to the recorded start; the
-// replay with its gripper goals and progress; the error against the sent path.
+// replay with its gripper goals and progress; the error against the sent path. In physics the tool holds the
+// simulation and steps it through the replay at --rtf (lockstep: the same bag replays bit for bit).
 #include "replay_command.h"
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <cstdio>
 #include <iostream>
 #include <mutex>
+#include <optional>
 
 #include <sensor_msgs/JointState.h>
 #include <std_srvs/Trigger.h>
@@ -25,6 +27,8 @@
 #include <vrrw_demos/segmentation.h>
 #include <vrrw_demos/tracking_error.h>
 #include <vrrw_kinematics/robot_model.h>
+#include <vrrw_physics/realtime_pacer.h>
+#include <vrrw_physics/ros/lockstep_client.h>
 #include <vrrw_scene/robot_config.h>
 
 #include <vrrw_demos/ros/demo_bag.h>
@@ -41,6 +45,7 @@ struct ReplayRequest
   std::string robot, segment;  ///< empty: the bag's only robot, the whole track
   ReplayOptions options;
   bool yes = false;
+  double rtf = 0.0;  ///< physics: the real-time factor of the lockstep replay (infinity: max); 0 otherwise
 };
 
 /// The recorded track to replay and what it is made of.
@@ -62,7 +67,8 @@ struct RunningRobot
 
 ReplayRequest parseReplayRequest(int argc, char** argv)
 {
-  const vrrw_common::Options options(argc, argv, 2, { "mode", "robot", "segment", "speed", "tolerance" }, { "yes" });
+  const vrrw_common::Options options(argc, argv, 2, { "mode", "robot", "segment", "speed", "tolerance", "rtf" },
+                                     { "yes" });
   options.expectPositional({ "BAG" });
   ReplayRequest request;
   request.bag = options.positional()[0];
@@ -74,6 +80,19 @@ ReplayRequest parseReplayRequest(int argc, char** argv)
   request.options.tolerance =
       options.number("tolerance", 1e-3, vrrw_common::Range::closed(0.0, ReplayBounds::kMaxTolerance, "rad"));
   request.yes = options.flag("yes");
+  if (options.has("rtf") && request.mode != "physics")
+    throw vrrw_common::OptionError("--rtf: only physics runs on simulated time (--mode physics)");
+  if (request.mode == "physics")
+  {
+    try
+    {
+      request.rtf = vrrw_physics::parseRealTimeFactor(options.text("rtf", "max"), "--rtf");
+    }
+    catch (const std::invalid_argument& e)
+    {
+      throw vrrw_common::OptionError(e.what());
+    }
+  }
   return request;
 }
 
@@ -198,6 +217,15 @@ public:
       states_.push_back({ (m->header.stamp - origin_).toSec(), std::move(*q) });
     });
   }
+  /// Waits (wall clock) until the subscription is connected to a publisher.
+  bool waitConnected(double seconds)
+  {
+    for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); ros::WallTime::now() < end;
+         ros::WallDuration(0.005).sleep())
+      if (sub_.getNumPublishers() > 0)
+        return true;
+    return false;
+  }
   std::vector<MeasuredState> take()
   {
     sub_.shutdown();
@@ -211,6 +239,54 @@ private:
   std::mutex mutex_;
   std::vector<MeasuredState> states_;  ///< PROTECTED BY mutex_ (the spinner's threads append)
   ros::Subscriber sub_;  ///< last: destroyed first (its shutdown waits for a running callback)
+};
+
+/// Physics in lockstep for the tool's run: the simulation held (paused) and stepped at the request's real-time
+/// factor; let run again at the end when it ran before.
+class SimulationHold
+{
+public:
+  SimulationHold(vrrw_common::PersistentServices& services, double rtf)
+    : sim_(services, "/physics", lockstepOptions(rtf))
+  {
+    try
+    {
+      if (!sim_.waitForPhysics(10.0))
+        throw vrrw_common::WorkspaceError("replay: --mode physics: no /physics/step (is the physics node running?)");
+      was_running_ = !sim_.paused();
+      sim_.pause();
+      sim_.now();
+    }
+    catch (const vrrw_physics::LockstepError& e)
+    {
+      throw vrrw_common::WorkspaceError(std::string("replay: ") + e.what());
+    }
+  }
+  ~SimulationHold()
+  {
+    if (!was_running_)
+      return;
+    try
+    {
+      sim_.unpause();
+    }
+    catch (const vrrw_physics::LockstepError& e)
+    {
+      std::cerr << "replay: the simulation stays paused: " << e.what() << "\n";
+    }
+  }
+  vrrw_physics::LockstepClient& simulation() { return sim_; }
+
+private:
+  static vrrw_physics::LockstepOptions lockstepOptions(double rtf)
+  {
+    vrrw_physics::LockstepOptions options;
+    options.rtf = rtf;
+    return options;
+  }
+
+  vrrw_physics::LockstepClient sim_;
+  bool was_running_ = false;
 };
 
 bool resetPhysics(RobotControllers& controllers)
@@ -284,8 +360,10 @@ bool approach(const PreparedReplay& r, RobotControllers& controllers)
 int replayAndMeasure(const PreparedReplay& r, RobotControllers& controllers, ros::NodeHandle& nh)
 {
   const RobotTrack& track = r.input.track;
-  const ros::Time start = ros::Time::now() + ros::Duration(0.2);
+  const ros::Time start = controllers.now() + ros::Duration(0.2);
   StateLog log(nh, "/" + track.robot + "/joint_states", track.joint_names, start);
+  if (!log.waitConnected(10.0))  // in lockstep the first step publishes: nothing may be missed
+    throw vrrw_common::WorkspaceError("replay: /" + track.robot + "/joint_states: no publisher within 10 s");
   const ArmMotion replay{ "replay", r.path.trajectory, start, gripperTimeline(track, r.path) };
   for (const auto& g : replay.gripper_goals)
     std::cout << "replay: gripper -> " << g.position << " at t = " << g.time << " s" << std::endl;
@@ -332,6 +410,13 @@ int runReplay(int argc, char** argv, const std::atomic<bool>& interrupted)
     throw DemoError("replay: not confirmed; nothing sent");
   RobotControllers controllers(r.input.track.robot, r.request.mode == "real", &interrupted);
   controllers.connect(10.0);
+  vrrw_common::PersistentServices links;  // the simulation's, closed before ROS stops
+  std::optional<SimulationHold> hold;
+  if (r.request.mode == "physics")
+  {
+    hold.emplace(links, r.request.rtf);
+    controllers.holdSimulation(hold->simulation());
+  }
   if (r.input.gripper_only)
   {
     const auto outcome = controllers.runGripper(

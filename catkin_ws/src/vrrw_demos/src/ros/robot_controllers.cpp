@@ -6,6 +6,7 @@
 #include <vrrw_common/joint_mapping.h>
 #include <vrrw_common/ros/persistent_service.h>
 #include <vrrw_demos/demo_error.h>
+#include <vrrw_physics/ros/lockstep_client.h>
 #include <vrrw_trajectory/msg_conversions.h>
 
 namespace vrrw_demos
@@ -15,6 +16,10 @@ namespace
 /// Wall time between looks at the clock and the goals: short against a 10 ms point spacing, long enough
 /// not to busy a core.
 const ros::WallDuration kPoll(0.002);
+/// Lockstep: simulated s per step call while nothing else is due (a progress line and a cancel between them).
+constexpr double kSlice = 0.25;
+/// Lockstep: wall s a controller may take to take a goal sent while the simulation waits.
+constexpr double kTakeSeconds = 10.0;
 
 }  // namespace
 
@@ -76,7 +81,8 @@ std::vector<double> RobotControllers::measuredArm(const std::vector<std::string>
   {
     {
       std::lock_guard<std::mutex> lock(state_mutex_);
-      if (states_seen_ > seen)  // a state newer than the call
+      // a state newer than the call; in lockstep the one published where the simulation waits
+      if (states_seen_ > seen || (sim_ && latest_state_.header.stamp >= sim_->time()))
       {
         if (const auto q = vrrw_common::findValues(latest_state_.name, latest_state_.position, joints))
           return *q;
@@ -103,8 +109,37 @@ bool RobotControllers::waitUntilAt(const std::vector<std::string>& joints, const
   return false;
 }
 
+ros::Time RobotControllers::now() const
+{
+  return sim_ ? sim_->time() : ros::Time::now();
+}
+
+template <class Client>
+bool RobotControllers::taken(Client& client)
+{
+  for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(kTakeSeconds); ros::WallTime::now() < end;
+       kPoll.sleep())
+    if (client.getState() != actionlib::SimpleClientGoalState::PENDING)
+      return true;
+  return false;
+}
+
 bool RobotControllers::pause(double seconds)
 {
+  if (sim_)
+  {
+    try
+    {
+      for (double left = seconds; left > 1e-9 && !cancelled(); left -= kSlice)
+        sim_->step(std::min(left, kSlice));
+    }
+    catch (const vrrw_physics::LockstepError& e)
+    {
+      ROS_ERROR_STREAM(e.what());
+      return false;
+    }
+    return !cancelled();
+  }
   ros::Time until = ros::Time::now() + ros::Duration(seconds);
   while (!cancelled())
   {
@@ -153,6 +188,8 @@ GoalOutcome RobotControllers::armOutcome()
 
 GoalOutcome RobotControllers::runArm(const ArmMotion& motion, double slack, const Progress& progress)
 {
+  if (sim_ && !real_)
+    return runArmLockstep(motion, slack, progress);
   control_msgs::FollowJointTrajectoryGoal goal;
   goal.trajectory = vrrw_trajectory::toMsg(motion.trajectory);
   goal.trajectory.header.stamp = motion.start;
@@ -243,6 +280,68 @@ GoalOutcome RobotControllers::runArm(const ArmMotion& motion, double slack, cons
   return outcome;
 }
 
+GoalOutcome RobotControllers::runArmLockstep(const ArmMotion& motion, double slack, const Progress& progress)
+{
+  control_msgs::FollowJointTrajectoryGoal goal;
+  goal.trajectory = vrrw_trajectory::toMsg(motion.trajectory);
+  goal.trajectory.header.stamp = motion.start;  // ahead of where the simulation waits: it starts there
+  arm_.sendGoal(goal);
+  if (!taken(arm_))
+    return arm_.cancelGoal(), GoalOutcome{ "TIMEOUT", 0, "the arm controller did not take the goal" };
+  const ros::Time origin = motion.start.isZero() ? now() : motion.start;
+  const double duration = motion.trajectory.duration();
+  const ros::Time deadline = origin + ros::Duration(duration + slack);
+  std::size_t next_gripper = 0;
+  bool gripper_sent = false;
+  ros::WallTime shown = ros::WallTime::now();
+  const auto cancelAll = [&](const std::string& state, const std::string& why) {
+    arm_.cancelGoal();
+    if (gripper_sent)
+      gripper_.cancelGoal();
+    return GoalOutcome{ state, 0, why };
+  };
+  try
+  {
+    for (bool idle = false; !idle;)
+    {
+      const double elapsed = (now() - origin).toSec();
+      for (; next_gripper < motion.gripper_goals.size() && motion.gripper_goals[next_gripper].time <= elapsed + 1e-9;
+           ++next_gripper, gripper_sent = true)
+      {
+        control_msgs::GripperCommandGoal g;
+        g.command.position = motion.gripper_goals[next_gripper].position;
+        g.command.max_effort = motion.gripper_goals[next_gripper].effort;
+        gripper_.sendGoal(g);
+        if (!taken(gripper_))
+          return cancelAll("TIMEOUT", "the gripper controller did not take the goal");
+      }
+      if (cancelled())
+        return cancelAll("CANCELLED", "cancelled by the user");
+      if (now() > deadline)
+        return cancelAll("TIMEOUT", "no result " + std::to_string(slack) + " s after the motion's end; cancelled");
+      if (progress && (ros::WallTime::now() - shown).toSec() >= 1.0)
+      {
+        shown = ros::WallTime::now();
+        progress({ motion.name, elapsed, duration, false });
+      }
+      // to the next gripper goal's time (whole steps: at least one), else until every controller is idle
+      if (next_gripper < motion.gripper_goals.size())
+        sim_->step(std::clamp(motion.gripper_goals[next_gripper].time - elapsed, 0.001, kSlice));
+      else
+        idle = sim_->stepUntilIdle(kSlice);
+    }
+  }
+  catch (const vrrw_physics::LockstepError& e)
+  {
+    return cancelAll("TIMEOUT", e.what());
+  }
+  // the controllers ended their goals in the simulation; their results are on their way
+  for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(kTakeSeconds);
+       (!arm_.getState().isDone() || (gripper_sent && !gripper_.getState().isDone())) && ros::WallTime::now() < end;)
+    kPoll.sleep();
+  return armOutcome();
+}
+
 GoalOutcome RobotControllers::runGripper(double position, double effort, double seconds)
 {
   control_msgs::GripperCommandGoal goal;
@@ -251,10 +350,24 @@ GoalOutcome RobotControllers::runGripper(double position, double effort, double 
   last_clock_ = ros::Time::now();
   last_clock_wall_ = ros::WallTime::now();
   gripper_.sendGoal(goal);
-  const ros::Time deadline = ros::Time::now() + ros::Duration(seconds);
+  if (sim_ && !taken(gripper_))
+    return gripper_.cancelGoal(), GoalOutcome{ "TIMEOUT", 0, "the gripper controller did not take the goal" };
+  const ros::Time deadline = now() + ros::Duration(seconds);
+  try  // lockstep: until every controller is idle, then the result on its way (no step more)
+  {
+    for (bool idle = !sim_; !idle && !cancelled() && now() <= deadline;)
+      idle = sim_->stepUntilIdle(kSlice);
+  }
+  catch (const vrrw_physics::LockstepError& e)
+  {
+    return gripper_.cancelGoal(), GoalOutcome{ "TIMEOUT", 0, e.what() };
+  }
+  for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(kTakeSeconds);
+       sim_ && !gripper_.getState().isDone() && ros::WallTime::now() < end;)
+    kPoll.sleep();
   while (!gripper_.getState().isDone())
   {
-    if (!pause(0.01) || ros::Time::now() > deadline)
+    if (!pause(0.01) || now() > deadline)
     {
       gripper_.cancelGoal();
       return { cancelled() ? "CANCELLED" : "TIMEOUT", 0,

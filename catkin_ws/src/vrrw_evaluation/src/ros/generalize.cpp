@@ -68,6 +68,7 @@ void PickPlaceDemo::generalize(DemoReport& report)
   }
   vrrw_common::PersistentServices services;
   vrrw_skills::WorkspaceArm arm(node_, client_.robot().name, services);
+  arm.holdSimulation(client_.simulation());  // the trials step the simulation the runner holds
   arm.waitUntilReady(10.0);
   vrrw_skills::ArmServices kinematics(services, arm.robot(), arm.armJoints());
   vrrw_skills::SkillTrials trials(node_, skill, arm, kinematics, services, cell_.object, cell_.obstacles);

@@ -1,6 +1,7 @@
 #include "ghost_operator.h"
 
 #include <algorithm>
+#include <future>
 #include <std_srvs/Trigger.h>
 #include <tf2_eigen/tf2_eigen.h>
 #include <vrrw_msgs/GhostExecute.h>
@@ -10,9 +11,25 @@
 
 namespace vrrw_evaluation
 {
-GhostOperator::GhostOperator(ros::NodeHandle& node, const std::string& robot)
-  : node_(node), prefix_("/" + robot + "/ghost/")
+namespace
 {
+/// Wall seconds for what the interaction node does at once while the simulation waits (send the goal, answer).
+constexpr double kAnswerSeconds = 10.0;
+/// Longest ghost motion stepped (simulated s): a plan is bounded to 600 s, the demo's take a few.
+constexpr double kLongestMotion = 600.0;
+}  // namespace
+
+GhostOperator::GhostOperator(ros::NodeHandle& node, const std::string& robot, vrrw_physics::LockstepClient& sim)
+  : prefix_("/" + robot + "/ghost/"), self_(ros::this_node::getName() + "-"), sim_(sim)
+{
+  status_ = node.subscribe<actionlib_msgs::GoalStatusArray>(
+      "/" + robot + "/arm_controller/follow_joint_trajectory/status", 100,
+      [this](const actionlib_msgs::GoalStatusArray::ConstPtr& msg) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (const auto& goal : msg->status_list)  // taken (part of the simulation), and not this runner's own
+          if (goal.status != actionlib_msgs::GoalStatus::PENDING && goal.goal_id.id.rfind(self_, 0) != 0)
+            goals_.insert(goal.goal_id.id);
+      });
 }
 
 bool GhostOperator::waitUntilReady(double seconds, std::string& error)
@@ -87,12 +104,37 @@ bool GhostOperator::drive(const std::vector<Eigen::Isometry3d>& waypoints, const
     *plan_ms += (ros::WallTime::now() - start).toSec() * 1e3;
   if (!plan.response.success)
     return error = prefix_ + "plan: " + plan.response.message, false;
-  vrrw_msgs::GhostExecute execute;
+  return execute(error);
+}
+
+bool GhostOperator::execute(std::string& error)
+{
   use(prefix_ + "execute");
-  if (!links_.tryCall(prefix_ + "execute", execute))
-    return error = prefix_ + "execute: call failed", false;
-  if (!execute.response.success)
-    return error = prefix_ + "execute: " + execute.response.message + " " + execute.response.error_string, false;
+  std::set<std::string> before;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    before = goals_;
+  }
+  auto taken = [&] {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return goals_.size() > before.size();
+  };
+  vrrw_msgs::GhostExecute call;
+  std::string why;
+  auto answer = std::async(std::launch::async, [&] { return links_.tryCall(prefix_ + "execute", call, &why); });
+  const auto answered = [&](double seconds) {
+    return answer.wait_for(std::chrono::duration<double>(seconds)) == std::future_status::ready;
+  };
+  // Wait until the goal is in the controller (or the call ended without one: a refusal), then step.
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(kAnswerSeconds);
+  while (!taken() && !answered(0.001) && ros::WallTime::now() < end)
+    ;
+  if (taken())
+    sim_.stepUntilIdle(kLongestMotion);
+  if (!answered(kAnswerSeconds) || !answer.get())
+    return error = prefix_ + "execute: " + (why.empty() ? "no answer" : why), false;
+  if (!call.response.success)
+    return error = prefix_ + "execute: " + call.response.message + " " + call.response.error_string, false;
   return true;
 }
 }  // namespace vrrw_evaluation

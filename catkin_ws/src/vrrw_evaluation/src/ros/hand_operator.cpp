@@ -9,14 +9,20 @@ namespace vrrw_evaluation
 {
 namespace
 {
-constexpr double kRate = 100.0;  // Hz, a tracker's rate
-}
+constexpr double kRate = 100.0;  // Hz, a tracker's rate (of simulated time)
+/// Poses per step slice (50 ms): fewer than the queues of 10 between the hand and physics hold.
+constexpr std::size_t kSlice = 5;
+/// Wall seconds for what the interaction node does at once (pass a pose on, answer a grip).
+constexpr double kAnswerSeconds = 10.0;
+}  // namespace
 
-HandOperator::HandOperator(ros::NodeHandle& node, const std::string& robot, const std::string& hand)
+HandOperator::HandOperator(ros::NodeHandle& node, const std::string& robot, vrrw_physics::LockstepClient& sim,
+                           const std::string& hand)
   : robot_(robot)
   , hand_(hand)
   , pose_topic_("/operator/" + hand + "/pose")
   , grip_topic_("/operator/" + hand + "/grip")
+  , sim_(sim)
 {
   pose_ = node.advertise<geometry_msgs::PoseStamped>(pose_topic_, 10);
   grip_ = node.advertise<std_msgs::Float64>(grip_topic_, 10);
@@ -26,16 +32,23 @@ HandOperator::HandOperator(ros::NodeHandle& node, const std::string& robot, cons
     std::lock_guard<std::mutex> lock(mutex_);
     events_seen_.push_back(e->kind);
   });
+  // what the interaction node makes of the hand: physics gets the stamp of each pose on its spring's target
+  spring_targets_ = node.subscribe<vrrw_physics::SpringTarget>(
+      "/physics/spring_target", 100, [this](const vrrw_physics::SpringTarget::ConstPtr& m) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        spring_target_ = std::max(spring_target_, m->header.stamp);
+      });
 }
 
 bool HandOperator::waitUntilReady(double seconds, std::string& error)
 {
-  if (!ros::service::waitForService("/" + robot_ + "/free_drive", ros::Duration(seconds)))
+  if (!vrrw_common::PersistentServices::waitFor("/" + robot_ + "/free_drive", seconds))
     return error = "no interaction node (/" + robot_ + "/free_drive)", false;
   // the interaction node looks for new hands once a second
   for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); ros::WallTime::now() < end;
        ros::WallDuration(0.05).sleep())
-    if (pose_.getNumSubscribers() > 0 && grip_.getNumSubscribers() > 0 && events_.getNumPublishers() > 0)
+    if (pose_.getNumSubscribers() > 0 && grip_.getNumSubscribers() > 0 && events_.getNumPublishers() > 0 &&
+        spring_targets_.getNumPublishers() > 0)
       return true;
   return error = "the interaction node did not take the hand " + pose_topic_, false;
 }
@@ -52,10 +65,10 @@ bool HandOperator::setFreeDrive(bool on, std::string& error)
   return true;
 }
 
-void HandOperator::publish(const Eigen::Isometry3d& pose, double grip)
+void HandOperator::publish(const Eigen::Isometry3d& pose, double grip, const ros::Time& stamp)
 {
   geometry_msgs::PoseStamped msg;
-  msg.header.stamp = ros::Time::now();
+  msg.header.stamp = stamp;
   msg.header.frame_id = "world";
   msg.pose = tf2::toMsg(pose);
   pose_.publish(msg);
@@ -66,18 +79,53 @@ void HandOperator::publish(const Eigen::Isometry3d& pose, double grip)
 
 bool HandOperator::holdUntil(const Eigen::Isometry3d& pose, double grip, const std::string& kind, double seconds)
 {
-  ros::WallRate rate(kRate);
-  for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); ros::WallTime::now() < end;)
   {
-    publish(pose, grip);
+    std::lock_guard<std::mutex> lock(mutex_);
+    events_seen_.clear();
+  }
+  for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); ros::WallTime::now() < end;
+       ros::WallDuration(0.01).sleep())
+  {
+    publish(pose, grip, sim_.time());
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!kind.empty() && std::find(events_seen_.begin(), events_seen_.end(), kind) != events_seen_.end())
+      return true;
+  }
+  return false;
+}
+
+bool HandOperator::closeOn(const Eigen::Isometry3d& pose)
+{
+  for (int attempt = 0; attempt < 3; ++attempt)
+  {
+    holdUntil(pose, 0.0, "", 0.1);  // the hand is there, open
+    if (holdUntil(pose, 1.0, "grab", 1.0))
+      return true;
+  }
+  return false;
+}
+
+bool HandOperator::pull(const std::vector<Eigen::Isometry3d>& poses, std::string& error)
+{
+  const ros::Time start = sim_.time();
+  for (std::size_t k = 0; k < poses.size();)
+  {
+    const std::size_t end = std::min(poses.size(), k + kSlice);
+    for (; k < end; ++k)
+      publish(poses[k], 1.0, start + ros::Duration(double(k + 1) / kRate));
+    const ros::Time last = start + ros::Duration(double(end) / kRate);
+    bool passed = false;
+    for (const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(kAnswerSeconds);
+         !passed && ros::WallTime::now() < until; ros::WallDuration(0.0005).sleep())
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      if (std::find(events_seen_.begin(), events_seen_.end(), kind) != events_seen_.end())
-        return true;
+      passed = spring_target_ >= last;
     }
-    rate.sleep();
+    if (!passed)
+      return error = pose_topic_ + ": the interaction node sent physics no spring target for the hand", false;
+    sim_.step((last - sim_.time()).toSec());
   }
-  return kind.empty();
+  return true;
 }
 
 bool HandOperator::freeDrive(const Eigen::Isometry3d& tcp_from, const Eigen::Isometry3d& tcp_to,
@@ -88,23 +136,22 @@ bool HandOperator::freeDrive(const Eigen::Isometry3d& tcp_from, const Eigen::Iso
   Eigen::Isometry3d grab_in_tcp = tcp_from.inverse();
   grab_in_tcp.translation() = tcp_from.inverse() * grab;
   grab_in_tcp.linear() = Eigen::Matrix3d::Identity();  // the hand turns with the TCP
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    events_seen_.clear();
-  }
   if (!setFreeDrive(true, error))
     return false;
-  holdUntil(tcp_from * grab_in_tcp, 0.0, "", 0.1);  // the hand is there, open
-  if (!holdUntil(tcp_from * grab_in_tcp, 1.0, "grab", 2.0))
+  if (!closeOn(tcp_from * grab_in_tcp))
     return setFreeDrive(false, error), error = pose_topic_ + ": the hand closed at the wrist but grabbed nothing", false;
-  ros::WallRate rate(kRate);
+  // the pull along a minimum-jerk line, then the hand holds still for the dwell
+  std::vector<Eigen::Isometry3d> poses;
   const int steps = std::max(1, int(std::lround(seconds * kRate)));
-  for (int k = 1; k <= steps; ++k, rate.sleep())
-    publish(interpolatePose(tcp_from, tcp_to, minimumJerk(double(k) / steps)) * grab_in_tcp, 1.0);
-  holdUntil(tcp_to * grab_in_tcp, 1.0, "", dwell);
-  const bool rigid = setFreeDrive(false, error);  // the arm holds where the hand left it
-  if (!holdUntil(tcp_to * grab_in_tcp, 0.0, "release", 1.0) && rigid)
+  for (int k = 1; k <= steps; ++k)
+    poses.push_back(interpolatePose(tcp_from, tcp_to, minimumJerk(double(k) / steps)) * grab_in_tcp);
+  poses.insert(poses.end(), std::size_t(std::lround(dwell * kRate)), tcp_to * grab_in_tcp);
+  if (!pull(poses, error))
+    return setFreeDrive(false, error), false;
+  if (!setFreeDrive(false, error))  // the arm holds where the hand left it
+    return false;
+  if (!holdUntil(tcp_to * grab_in_tcp, 0.0, "release", 1.0))
     return error = pose_topic_ + ": the hand opened but did not let go", false;
-  return rigid;
+  return true;
 }
 }  // namespace vrrw_evaluation

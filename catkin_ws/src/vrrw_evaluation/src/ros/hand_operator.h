@@ -1,6 +1,8 @@
 #pragma once
 // The scripted operator's hand: a tracked hand on /operator/<hand>/pose and /operator/<hand>/grip that grabs
 // the robot's wrist while /<robot>/free_drive holds the arm compliant, the way a VR operator pulls the robot.
+// In lockstep: it grabs and lets go while the simulation waits, and moves ahead of simulated time, its poses
+// stamped with when they take effect.
 #include <Eigen/Geometry>
 #include <geometry_msgs/PoseStamped.h>
 #include <mutex>
@@ -10,15 +12,19 @@
 #include <utility>
 #include <vector>
 #include <vrrw_msgs/Event.h>
+#include <vrrw_physics/SpringTarget.h>
 
 #include <vrrw_common/ros/persistent_service.h>
+#include <vrrw_physics/ros/lockstep_client.h>
 
 namespace vrrw_evaluation
 {
 class HandOperator
 {
 public:
-  HandOperator(ros::NodeHandle& node, const std::string& robot, const std::string& hand = "right");
+  /// \brief `sim`: the hold on the physics node the pull is stepped through.
+  HandOperator(ros::NodeHandle& node, const std::string& robot, vrrw_physics::LockstepClient& sim,
+               const std::string& hand = "right");
 
   /// \brief Waits for /<robot>/free_drive and for the interaction node to take the hand's topics.
   bool waitUntilReady(double seconds, std::string& error);
@@ -34,16 +40,25 @@ public:
 
 private:
   bool setFreeDrive(bool on, std::string& error);
-  void publish(const Eigen::Isometry3d& pose, double grip);
-  /// Publishes `pose` at 100 Hz with `grip` until an /operator/events event of `kind` for this hand or `seconds`.
+  void publish(const Eigen::Isometry3d& pose, double grip, const ros::Time& stamp);
+  /// While the simulation waits: publishes `pose` stamped where it waits, with `grip`, every 10 ms (wall clock)
+  /// until an /operator/events event of `kind` for this hand, at most `seconds`; true when it came.
   bool holdUntil(const Eigen::Isometry3d& pose, double grip, const std::string& kind, double seconds);
+  /// The hand closes at `pose` until the interaction node says it grabbed (retried with the hand opened first: a
+  /// grip that arrives before the hand's first pose grabs nothing).
+  bool closeOn(const Eigen::Isometry3d& pose);
+  /// The hand at `poses`, one every 10 ms of simulated time from where the simulation waits, a slice at a time:
+  /// each slice is published stamped ahead of simulated time and stepped once its spring targets reached physics.
+  bool pull(const std::vector<Eigen::Isometry3d>& poses, std::string& error);
 
   std::string robot_, hand_, pose_topic_, grip_topic_;
+  vrrw_physics::LockstepClient& sim_;
   ros::Publisher pose_, grip_;
-  ros::Subscriber events_;
-  std::mutex mutex_;
-  std::vector<std::string> events_seen_;  ///< kinds of this hand's /operator/events since the last drive
   std::vector<std::string> used_;
   vrrw_common::PersistentServices links_;
+  std::mutex mutex_;                      ///< protects the two below
+  std::vector<std::string> events_seen_;  ///< PROTECTED BY mutex_: kinds of this hand's /operator/events
+  ros::Time spring_target_;  ///< PROTECTED BY mutex_: the latest stamp the interaction node sent to physics
+  ros::Subscriber events_, spring_targets_;
 };
 }  // namespace vrrw_evaluation

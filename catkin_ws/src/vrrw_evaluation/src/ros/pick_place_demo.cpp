@@ -17,6 +17,14 @@
 
 namespace vrrw_evaluation
 {
+namespace
+{
+/// Simulated s the operator rests between two instructions of the teach. Paced, the script's own calls took about
+/// this long; in lockstep they take no simulated time, and the skill learner's keyframe rule finds an instruction's
+/// end where the arm rests (without the rest it ran the lift on into the carry).
+constexpr double kOperatorPause = 0.4;
+}  // namespace
+
 void progress(const std::string& line)
 {
   std::printf("demo: %s\n", line.c_str());
@@ -93,7 +101,7 @@ bool PickPlaceDemo::resetObject(const Eigen::Isometry3d& pose, std::string& erro
   // Open first: a trial that failed holding the drill must not carry it home nor close on it again.
   if (!client_.grip(options_.grasp.finger_open, 0.0, error) || !goHome(error) || !client_.placeObject(pose, error))
     return false;
-  ros::WallDuration(0.3).sleep();  // the drill settles on the table
+  client_.settle(0.3);  // the drill settles on the table
   return true;
 }
 
@@ -101,7 +109,7 @@ void PickPlaceDemo::capture(const std::string& row, std::size_t boundary, bool f
 {
   if (!frames || options_.capture_command.empty())
     return;
-  ros::WallDuration(0.15).sleep();  // rviz draws the last tf
+  ros::WallDuration(0.15).sleep();  // rviz (10 Hz) draws the state published where the simulation waits
   // the command's words as arguments, the file as one of them: no shell ever reads the --out path
   const std::string file = options_.out + "/frames/" + row + "_" + std::to_string(boundary) + ".png";
   std::istringstream words(options_.capture_command);
@@ -138,8 +146,10 @@ bool PickPlaceDemo::perform(const std::string& row, bool frames, const std::vect
       error = kInstructions[i] + ": " + error;
     else
       capture(row, i + 1, frames);
+    if (ok && row == "demonstration" && i + 1 < instructions.size())
+      client_.settle(kOperatorPause);
   }
-  ros::WallDuration(0.5).sleep();  // the released drill comes to rest, still recorded
+  client_.settle(0.5);  // the released drill comes to rest, still recorded
   recording = client_.stopRecording();
   writeRecording(row, recording, segments);
   return ok;
@@ -213,7 +223,7 @@ bool PickPlaceDemo::teach(DemoReport& report, std::string& error)
   report.message_counts["/demos/events"] = recording.event_messages;
   report.bag_messages = recording.bag_messages;
   report.bag_file = recording.bag_file;
-  report.teach_source += "; bag by " + recording.recorder;
+  report.teach_source += "; bag by vrrw_demos recorder_node";
   if (!recording.arm_contacts.empty())
     progress("warning: the demonstration touched " + *recording.arm_contacts.begin());
   return true;

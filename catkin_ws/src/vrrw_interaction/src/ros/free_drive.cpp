@@ -119,7 +119,7 @@ void FreeDrive::onPose(Tracker& tracker, const geometry_msgs::PoseStamped& msg)
   std::lock_guard<std::mutex> lock(view_.mutex());
   tracker.hand.setPose(pose, ros::WallTime::now().toSec());
   if (tracker.hand.held())
-    return follow(tracker);
+    return follow(tracker, msg.header.stamp);
   if (view_.mode() != "physics")
     return;
   // the open hand pushes, once clear of what it let go (a sphere appearing inside a link would kick it)
@@ -136,21 +136,22 @@ void FreeDrive::onGrip(Tracker& tracker, const std_msgs::Float64& msg)
     ROS_WARN_STREAM_THROTTLE(1.0, "/operator/" << tracker.hand.id() << "/grip: data: " << error << " (ignored)");
     return;
   }
-  std::optional<GrabTarget> taken, released;
+  std::optional<GrabTarget> taken, let_go;
   {
     std::lock_guard<std::mutex> lock(view_.mutex());
     const Hand::GripChange change = tracker.hand.setGrip(msg.data);
     if (change == Hand::GripChange::Close && !tracker.hand.held() && tracker.hand.hasPose())
       taken = grab(tracker);
     else if (change == Hand::GripChange::Open && tracker.hand.held())
-      released = release(tracker, "opened");
+      let_go = release(tracker);
   }
-  if (view_.mode() != "physics")
-    return;
-  if (taken)
-    attachSpring(tracker, *taken);
-  if (released)
-    physics_.release(tracker.spring, released->body);
+  const bool physics = view_.mode() == "physics";
+  if (taken && (!physics || attachSpring(tracker, *taken)))
+    grabbed(tracker, *taken);
+  if (let_go && physics)
+    physics_.release(tracker.spring, let_go->body);
+  if (let_go)
+    released(tracker, *let_go, "opened");
 }
 
 std::optional<GrabTarget> FreeDrive::grab(Tracker& tracker)
@@ -167,12 +168,16 @@ std::optional<GrabTarget> FreeDrive::grab(Tracker& tracker)
   tracker.hand.hold(*target);
   tracker.pushes = false;
   physics_.hand(tracker.hand.id(), tracker.hand.pose(), 0.0);
-  view_.event(target->robot, "grab", "hand " + tracker.hand.id() + " grabbed " + target->body + " at " +
-                                         describe(target->point_in_world));
   return target;
 }
 
-void FreeDrive::attachSpring(Tracker& tracker, const GrabTarget& target)
+void FreeDrive::grabbed(Tracker& tracker, const GrabTarget& target)
+{
+  view_.event(target.robot, "grab", "hand " + tracker.hand.id() + " grabbed " + target.body + " at " +
+                                        describe(target.point_in_world));
+}
+
+bool FreeDrive::attachSpring(Tracker& tracker, const GrabTarget& target)
 {
   // a link is held by position and orientation (the link's own at the grab: no pull), an object by position
   Eigen::Isometry3d at;
@@ -182,28 +187,33 @@ void FreeDrive::attachSpring(Tracker& tracker, const GrabTarget& target)
   }
   at.translation() = target.point_in_world;
   if (physics_.attach(tracker.spring, target.body, target.point_in_body, at, !target.object))
-    return;
-  std::lock_guard<std::mutex> lock(view_.mutex());
+    return true;
+  std::lock_guard<std::mutex> lock(view_.mutex());  // (physics warned why)
   if (tracker.hand.held() && tracker.hand.held()->body == target.body)
-    release(tracker, "physics refused the spring");
+    release(tracker);
+  return false;
 }
 
-GrabTarget FreeDrive::release(Tracker& tracker, const std::string& why)
+GrabTarget FreeDrive::release(Tracker& tracker)
 {
   const GrabTarget held = *tracker.hand.held();
   tracker.hand.release();
-  view_.event(held.robot, "release", "hand " + tracker.hand.id() + " released " + held.body + " (" + why + ")");
   return held;
 }
 
-void FreeDrive::follow(Tracker& tracker)
+void FreeDrive::released(Tracker& tracker, const GrabTarget& held, const std::string& why)
+{
+  view_.event(held.robot, "release", "hand " + tracker.hand.id() + " released " + held.body + " (" + why + ")");
+}
+
+void FreeDrive::follow(Tracker& tracker, const ros::Time& stamp)
 {
   const GrabTarget& held = *tracker.hand.held();
   if (view_.mode() == "physics")
   {
     Eigen::Isometry3d target = tracker.hand.carried(tracker.link_at_grab);
     target.translation() = tracker.hand.heldPointTarget();
-    physics_.moveTarget(tracker.spring, target);
+    physics_.moveTarget(tracker.spring, target, stamp);  // the hand's own time: deterministic when it runs ahead
     return;
   }
   // fake mode: the arm in free-drive follows the hand kinematically, at most 50 commands a second
@@ -227,7 +237,7 @@ void FreeDrive::follow(Tracker& tracker)
 
 void FreeDrive::tick()
 {
-  std::vector<std::pair<std::string, std::string>> springs;  // released: (spring, body)
+  std::vector<std::pair<Tracker*, GrabTarget>> stale;  // let go: their springs are released below
   {
     std::lock_guard<std::mutex> lock(view_.mutex());
     visualization_msgs::MarkerArray markers;
@@ -235,7 +245,7 @@ void FreeDrive::tick()
     for (auto& [id, tracker] : trackers_)
     {
       if (tracker->hand.held() && tracker->hand.stale(now))
-        springs.emplace_back(tracker->spring, release(*tracker, "stale: no pose for 0.5 s").body);
+        stale.emplace_back(tracker.get(), release(*tracker));
       if (tracker->pushes && tracker->hand.stale(now, 0.4))  // take the sphere away before physics has to
       {
         physics_.hand(id, tracker->hand.pose(), 0.0);
@@ -248,8 +258,11 @@ void FreeDrive::tick()
     if (!markers.markers.empty())  // (recordings keep /operator/*: no empty arrays at 20 Hz)
       hand_markers_.publish(markers);
   }
-  if (view_.mode() == "physics")
-    for (const auto& [spring, body] : springs)
-      physics_.release(spring, body);
+  for (const auto& [tracker, held] : stale)
+  {
+    if (view_.mode() == "physics")
+      physics_.release(tracker->spring, held.body);
+    released(*tracker, held, "stale: no pose for 0.5 s");
+  }
 }
 }  // namespace vrrw_interaction

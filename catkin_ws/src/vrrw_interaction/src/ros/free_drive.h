@@ -43,14 +43,23 @@ private:
   void discoverHands();
   void onPose(Tracker& tracker, const geometry_msgs::PoseStamped& msg);
   void onGrip(Tracker& tracker, const std_msgs::Float64& msg);
-  /// \brief What the closing hand takes, taken (mutex held); none when it closed on nothing.
+  /// \brief What the closing hand takes, taken (mutex held); none when it closed on nothing. Its `grab` event
+  /// follows once it is held (grabbed()).
   std::optional<GrabTarget> grab(Tracker& tracker);
-  /// \brief Physics: the spring of a grab just taken (mutex not held); lets go again when physics refuses it.
-  void attachSpring(Tracker& tracker, const GrabTarget& target);
-  /// \brief Lets go (mutex held); what it held, whose spring physics_ then releases without the mutex.
-  GrabTarget release(Tracker& tracker, const std::string& why);
-  /// \brief The held body follows the hand (mutex held): a spring target, or in fake mode an arm command.
-  void follow(Tracker& tracker);
+  /// \brief Physics: the spring of a grab just taken (mutex not held); false, having let go again, when physics
+  /// refused it.
+  bool attachSpring(Tracker& tracker, const GrabTarget& target);
+  /// \brief The `grab` event: the hand holds `target` now (in physics: its spring is attached).
+  void grabbed(Tracker& tracker, const GrabTarget& target);
+  /// \brief Lets go (mutex held); what it held, whose spring physics_ then releases without the mutex. Its
+  /// `release` event follows once it is let go (released()).
+  GrabTarget release(Tracker& tracker);
+  /// \brief The `release` event, after physics released the spring: a script that steps the simulation after it
+  /// knows that no step pulls any more.
+  void released(Tracker& tracker, const GrabTarget& held, const std::string& why);
+  /// \brief The held body follows the hand (mutex held): a spring target at the hand pose's `stamp`, or in fake
+  /// mode an arm command.
+  void follow(Tracker& tracker, const ros::Time& stamp);
   /// \brief 20 Hz: stale hands let go and stop pushing; the hands' markers.
   void tick();
 

@@ -33,8 +33,10 @@ public:
   bool attach(const std::string& id, const std::string& body, const Eigen::Vector3d& point,
               const Eigen::Isometry3d& target, bool angular);
   void release(const std::string& id, const std::string& body);
-  /// \brief Moves spring `id`'s target (a topic: no waiting).
-  void moveTarget(const std::string& id, const Eigen::Isometry3d& target);
+  /// \brief Moves spring `id`'s target (a topic: no waiting) at simulated time `stamp` (physics applies it at the
+  /// first step at or after it; zero or past: before the next step). A stamp more than a second ahead of ROS time
+  /// (a tracker on a clock of its own) is sent as zero, so physics never holds it back for long.
+  void moveTarget(const std::string& id, const Eigen::Isometry3d& target, const ros::Time& stamp = ros::Time());
   /// \brief Hand `id` as a pushing sphere of `radius` at `pose` (0: none).
   void hand(const std::string& id, const Eigen::Isometry3d& pose, double radius);
 

@@ -22,6 +22,8 @@ public:
   /// \brief Wall seconds to wait before the step that follows `sim_time` (0 when late).
   double wait(double sim_time, Clock::time_point now = Clock::now());
   double rtf() const { return rtf_; }
+  /// \brief Paces at \a rtf from the next restart().
+  void setRtf(double rtf) { rtf_ = rtf; }
 
 private:
   double max_lag_;

@@ -43,7 +43,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const vrrw_s
   for (const std::string& robot : world_.robotNames())
     robot_states_.push_back(nh.advertise<sensor_msgs::JointState>(robot + "/joint_states", 100, true));
   all_states_ = nh.advertise<sensor_msgs::JointState>("joint_states", 100, true);
-  contacts_ = pnh.advertise<Contacts>("contacts", 10);
+  contacts_ = pnh.advertise<Contacts>("contacts", 100);  // a lockstep client's step slice (0.25 s) in a burst, none dropped
   errors_ = pnh.advertise<std_msgs::String>("errors", 10, true);
   clock_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10, true);
   subscribers_.push_back(pnh.subscribe("hand", 100, &PhysicsNode::onHand, this));
@@ -84,10 +84,12 @@ void PhysicsNode::run()
   while (ros::ok())
   {
     bool stepping, nothing_to_step;
+    double request_rtf = 0.0;
     {
       std::lock_guard<std::mutex> lock(step_mutex_);
       stepping = step_ && !step_->finished;
       nothing_to_step = stepping && step_->steps == 0;
+      request_rtf = stepping ? step_->rtf : 0.0;
     }
     if (stepping && (nothing_to_step || world_.stopped()))
     {
@@ -103,7 +105,10 @@ void PhysicsNode::run()
       continue;
     }
     if (!running)
+    {
+      pacer_.setRtf(request_rtf > 0.0 ? request_rtf : options_.rtf);  // a step request's own, or the node's
       pacer_.restart(world_.time());
+    }
     running = true;
     advance();
     if (stepping && runStepRequest(true))
@@ -168,11 +173,14 @@ bool PhysicsNode::serveStep(Step::Request& req, Step::Response& res)
     res.message = "a step request is running";
   else if (!(req.duration >= 0.0 && req.duration <= kMaxStep))
     res.message = "duration: " + std::to_string(req.duration) + " outside [0, 600] s";
+  else if (!(req.rtf >= 0.0))
+    res.message = "rtf: " + std::to_string(req.rtf) + " is not 0 (the node's), a positive number or inf";
   if (!res.message.empty())
     return true;
   step_ = std::make_unique<StepRequest>();
   step_->steps = std::uint64_t(std::llround(req.duration / world_.options().dt));
   step_->until_idle = req.until_idle;
+  step_->rtf = req.rtf;
   ros::getGlobalCallbackQueue()->addCallback(boost::make_shared<Wake>());
   step_done_.wait(lock, [this] { return step_->finished; });
   res.success = step_->refused.empty();

@@ -53,6 +53,7 @@ private:
   {
     std::uint64_t steps = 0, done = 0;
     bool until_idle = false;
+    double rtf = 0.0;     ///< this request's real-time factor; 0: the node's
     bool finished = false;
     bool idle = false;    ///< at the end
     double time = 0.0;    ///< simulated, at the end

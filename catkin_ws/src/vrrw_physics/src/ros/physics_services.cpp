@@ -41,14 +41,9 @@ void PhysicsNode::advertiseServices(ros::NodeHandle& pnh)
     else
       world_.operatorInput().attachSpring(req.id, toSpring(req));
   });
-  service<SetObjectPose>(pnh, "set_object_pose", [this](auto& req) {
-    world_.setObjectPose(req.object, toEigen(req.pose));
-    if (paused_)
-    {
-      states_at_ = ~0ull;
-      publishStates();  // observers see where it went while the simulation waits
-    }
-  });
+  // (not published again while paused: tf keeps the first transform of a stamp and warns about every later one in
+  // every listener; observers see the object moved at the next step)
+  service<SetObjectPose>(pnh, "set_object_pose", [this](auto& req) { world_.setObjectPose(req.object, toEigen(req.pose)); });
 }
 
 void PhysicsNode::report(const std::string& source, const std::string& message, bool always)

@@ -16,6 +16,8 @@
 #include <ros/ros.h>
 #include <vrrw_common/options.h>
 #include <vrrw_common/ros/persistent_service.h>
+#include <vrrw_physics/realtime_pacer.h>
+#include <vrrw_physics/ros/lockstep_client.h>
 #include <vrrw_scene/scene_loader.h>
 #include <vrrw_skills/evaluation.h>
 #include <vrrw_skills/skill_error.h>
@@ -148,7 +150,8 @@ void writeReport(const EvaluationReport& report, const std::string& directory)
 int evaluateCommand(int argc, char** argv)
 {
   const auto start = std::chrono::steady_clock::now();
-  const vrrw_common::Options options(argc, argv, 2, { "scene", "robot", "object", "trials", "seed", "spread", "out" });
+  const vrrw_common::Options options(argc, argv, 2,
+                                     { "scene", "robot", "object", "trials", "seed", "spread", "out", "rtf" });
   options.expectPositional({ "SKILL.yaml" });
   EvaluationReport report;
   report.options = evaluationOptions(options);
@@ -163,6 +166,15 @@ int evaluateCommand(int argc, char** argv)
   report.object_end = skill.object_end;
   const std::set<std::string> obstacles = checkScene(report.scene, report.robot, report.object, skill.place_on);
   const std::string out = options.text("out", "skill_evaluation");
+  const std::string rtf = options.text("rtf", "max");
+  try
+  {
+    vrrw_physics::parseRealTimeFactor(rtf, "--rtf");
+  }
+  catch (const std::invalid_argument& e)
+  {
+    throw vrrw_common::OptionError(e.what());
+  }
   const int port = workspacePort();
   std::error_code error;
   std::filesystem::create_directories(out, error);
@@ -173,7 +185,7 @@ int evaluateCommand(int argc, char** argv)
   std::signal(SIGTERM, stopTrials);
   std::cout << "skill evaluate: bringing up " << report.scene << " in physics (log " << out << "/workspace.log)"
             << std::endl;
-  WorkspaceProcess workspace(report.scene, out + "/workspace.log", port);
+  WorkspaceProcess workspace(report.scene, rtf, out + "/workspace.log", port);
   int ros_argc = 1;
   ros::init(ros_argc, argv, "skill_evaluate", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
   waitForWorkspace(workspace, report.robot, 90.0);
@@ -181,7 +193,13 @@ int evaluateCommand(int argc, char** argv)
   ros::AsyncSpinner spinner(2);
   spinner.start();
   vrrw_common::PersistentServices services(vrrw_common::ServiceLimits{ 60.0, 60.0 });
+  // the trials hold the simulation and step it through every motion (lockstep): the same seed, the same trials
+  vrrw_physics::LockstepClient simulation(services);
+  if (!simulation.waitForPhysics(60.0))
+    throw SkillRefusal("the workspace's physics node does not answer /physics/step" + workspace.trouble());
+  simulation.pause();
   WorkspaceArm arm(node, report.robot, services);
+  arm.holdSimulation(simulation);
   arm.waitUntilReady(60.0);
   ArmServices kinematics(services, report.robot, arm.armJoints());
   SkillTrials trials(node, skill, arm, kinematics, services, report.object, obstacles);

@@ -55,7 +55,7 @@ void SkillRunner::execute(const std::vector<PlannedStep>& steps, RunReport& repo
 {
   for (const PlannedStep& step : steps)
   {
-    const ros::Time start = ros::Time::now();
+    const ros::Time start = arm_.now();
     if (step.gripper)
     {
       progress(step.instruction + ": gripper to " + format("%.3f", step.gripper_position) +
@@ -69,7 +69,7 @@ void SkillRunner::execute(const std::vector<PlannedStep>& steps, RunReport& repo
                (step.cartesian ? " (the Cartesian DMP by IK)" : ""));
       arm_.execute(step.instruction, step.trajectory);
     }
-    report.instruction_seconds.push_back({ step.instruction, (ros::Time::now() - start).toSec() });
+    report.instruction_seconds.push_back({ step.instruction, (arm_.now() - start).toSec() });
     if (done)
       done(step.instruction);
   }
@@ -90,7 +90,7 @@ RunReport SkillRunner::run(const Progress& progress, const Progress& done)
   const auto approach = planner.approach(here);
   report.planning_seconds += secondsSince(start);
   progress(format("planned the approach in %.0f ms", 1000.0 * report.planning_seconds));
-  const ros::Time cycle_start = ros::Time::now();
+  const ros::Time cycle_start = arm_.now();
   execute(approach, report, progress, done);
   // holding it: the planning scene carries the object with the hand from here
   services_.attach(object_, true);
@@ -115,7 +115,7 @@ RunReport SkillRunner::run(const Progress& progress, const Progress& done)
     throw;
   }
   services_.attach(object_, false);
-  report.cycle_seconds = (ros::Time::now() - cycle_start).toSec();
+  report.cycle_seconds = (arm_.now() - cycle_start).toSec();
   return report;
 }
 }  // namespace vrrw_skills

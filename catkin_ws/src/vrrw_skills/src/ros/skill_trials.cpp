@@ -1,5 +1,6 @@
 #include <vrrw_skills/ros/skill_trials.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -13,6 +14,12 @@
 
 namespace vrrw_skills
 {
+namespace
+{
+constexpr double kSamplePeriod = 0.1;  ///< s of simulated time between samples of the TCP and the object
+constexpr double kContactsSeconds = 10.0;  ///< wall s the last contacts of a trial may take to arrive
+}  // namespace
+
 SkillTrials::SkillTrials(ros::NodeHandle& node, const Skill& skill, WorkspaceArm& arm, ArmServices& kinematics,
                          vrrw_common::PersistentServices& services, std::string object,
                          std::set<std::string> obstacles)
@@ -24,32 +31,53 @@ SkillTrials::SkillTrials(ros::NodeHandle& node, const Skill& skill, WorkspaceArm
   , obstacles_(std::move(obstacles))
   , home_(arm.joints())
 {
-  contacts_ = node.subscribe("/physics/contacts", 100, &SkillTrials::onContacts, this);
-  sampler_ = node.createTimer(ros::Duration(0.1), &SkillTrials::onSample, this);
+  if (!arm.simulation())
+    throw SkillError("skill trials run in lockstep: the arm must hold the simulation (WorkspaceArm::holdSimulation)");
+  arm.watchFrame(object_);
+  stop_observer_ = arm.simulation()->addStopObserver([this](const ros::Time& stop) { sample(stop); });
+  // a queue far beyond what one step slice publishes (0.25 s at 100 Hz): no contact message is dropped
+  contacts_ = node.subscribe("/physics/contacts", 1000, &SkillTrials::onContacts, this);
+}
+
+SkillTrials::~SkillTrials()
+{
+  arm_.simulation()->removeStopObserver(stop_observer_);
 }
 
 void SkillTrials::onContacts(const vrrw_physics::Contacts::ConstPtr& message)
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!watching_)
-    return;
-  for (const auto& contact : message->contacts)
-    if (isArmCollision(contact.body_a, contact.body_b, arm_.robot(), obstacles_))
-      seen_.arm_contacts.insert(contact.body_a + "|" + contact.body_b);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    contacts_stamp_ = std::max(contacts_stamp_, message->header.stamp);
+    if (watching_ && message->header.stamp > watch_from_ && message->header.stamp <= watch_until_)
+      for (const auto& contact : message->contacts)
+        if (isArmCollision(contact.body_a, contact.body_b, arm_.robot(), obstacles_))
+          seen_.arm_contacts.insert(contact.body_a + "|" + contact.body_b);
+  }
+  contacts_arrived_.notify_all();
 }
 
-void SkillTrials::onSample(const ros::TimerEvent&)
+void SkillTrials::sample(const ros::Time& stop)
 {
-  const auto tcp = arm_.pose(arm_.tcpLink());
-  const auto object = arm_.pose(object_);
   std::lock_guard<std::mutex> lock(mutex_);
   if (!watching_)
     return;
-  if (tcp)
-    path_.push_back(tcp->position);
-  if (object)
-    seen_.max_lift =
-        std::max(seen_.max_lift, object->position.z() - seen_.object_start.translation().z());
+  for (; next_sample_ <= stop; next_sample_ += ros::Duration(kSamplePeriod))
+  {
+    if (const auto tcp = arm_.poseAt(arm_.tcpLink(), next_sample_))
+      path_.push_back(tcp->position);
+    if (const auto object = arm_.poseAt(object_, next_sample_))
+      seen_.max_lift = std::max(seen_.max_lift, object->position.z() - seen_.object_start.translation().z());
+  }
+}
+
+void SkillTrials::stopWatching(const ros::Time& end)
+{
+  std::unique_lock<std::mutex> lock(mutex_);
+  watch_until_ = end;
+  contacts_arrived_.wait_for(lock, std::chrono::duration<double>(kContactsSeconds),
+                             [&] { return contacts_stamp_ >= end; });
+  watching_ = false;
 }
 
 void SkillTrials::goHome()
@@ -107,7 +135,7 @@ void SkillTrials::reset(const Eigen::Isometry3d& object, const std::function<voi
   services_.call("/physics/set_object_pose", place);
   if (!place.response.success)
     throw SkillRefusal("reset: /physics/set_object_pose: " + place.response.message);
-  ros::Duration(kSettle).sleep();
+  arm_.settle(kSettle);
   progress("object at (" + std::to_string(pose.position.x()).substr(0, 6) + ", " +
            std::to_string(pose.position.y()).substr(0, 6) + ")");
 }
@@ -137,6 +165,8 @@ TrialResult SkillTrials::trial(int index, const PlanarPose& pose,
     seen_.object_start = toIsometry(arm_.pose(object_).value_or(toPose(start)));
     path_.clear();
     watching_ = true;
+    watch_from_ = next_sample_ = arm_.now();
+    watch_until_ = ros::TIME_MAX;
   }
   SkillRunner runner(skill_, arm_, kinematics_, object_);
   try
@@ -155,9 +185,9 @@ TrialResult SkillTrials::trial(int index, const PlanarPose& pose,
     std::lock_guard<std::mutex> lock(mutex_);
     seen_.failed_instruction = why;
   }
-  ros::Duration(kSettle).sleep();
+  arm_.settle(kSettle);
+  stopWatching(arm_.now());
   std::lock_guard<std::mutex> lock(mutex_);
-  watching_ = false;
   const auto end = arm_.pose(object_);
   seen_.object_end = end ? toIsometry(*end) : seen_.object_start;
   const TrialOutcome outcome = judgeTrial(seen_, toIsometry(skill_.object_end));

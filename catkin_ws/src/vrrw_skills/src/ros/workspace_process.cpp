@@ -55,7 +55,8 @@ int workspacePort()
   throw SkillRefusal("no free port for a ROS master in 11611-11710 (set VRRW_ROS_PORT)");
 }
 
-WorkspaceProcess::WorkspaceProcess(const std::string& scene, const std::string& log_file, int port)
+WorkspaceProcess::WorkspaceProcess(const std::string& scene, const std::string& rtf, const std::string& log_file,
+                                   int port)
   : log_file_(log_file)
 {
   const char* root = std::getenv("VRRW_ROOT");
@@ -73,7 +74,7 @@ WorkspaceProcess::WorkspaceProcess(const std::string& scene, const std::string& 
     ::setpgid(0, 0);
     ::dup2(log, STDOUT_FILENO);
     ::dup2(log, STDERR_FILENO);
-    const char* argv[] = { vrrw.c_str(), "up", scene.c_str(), "--mode", "physics", nullptr };
+    const char* argv[] = { vrrw.c_str(), "up", scene.c_str(), "--mode", "physics", "--rtf", rtf.c_str(), nullptr };
     ::execv(vrrw.c_str(), const_cast<char* const*>(argv));
     ::_exit(127);
   }

@@ -1,5 +1,5 @@
 #pragma once
-// A workspace of its own for `skill evaluate`: `./vrrw up SCENE --mode physics` (the one way a workspace comes
+// A workspace of its own for `skill evaluate`: `./vrrw up SCENE --mode physics --rtf R` (the one way a workspace comes
 // up) in a process group of its own, on a master port nobody uses, its output in a log; stopped whole.
 #include <string>
 #include <sys/types.h>
@@ -16,7 +16,8 @@ public:
   /// \brief Starts it on \a port; the scene is an argument of ./vrrw (argv, no shell). ROS_MASTER_URI of this
   /// process is set to the new master (call before ros::init). Throws SkillRefusal when ./vrrw cannot be found
   /// (VRRW_ROOT) or started.
-  WorkspaceProcess(const std::string& scene, const std::string& log_file, int port);
+  /// \a rtf: physics' real-time factor ("max" or a positive number, checked by the caller).
+  WorkspaceProcess(const std::string& scene, const std::string& rtf, const std::string& log_file, int port);
   /// \brief Stops the process group: SIGINT, and SIGKILL if it is not gone after 15 s.
   ~WorkspaceProcess();
   WorkspaceProcess(const WorkspaceProcess&) = delete;

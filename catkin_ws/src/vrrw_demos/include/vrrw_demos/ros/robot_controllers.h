@@ -18,6 +18,10 @@ namespace vrrw_common
 {
 class PersistentServices;
 }
+namespace vrrw_physics
+{
+class LockstepClient;
+}
 
 namespace vrrw_demos
 {
@@ -67,6 +71,8 @@ struct MotionProgress
 ///
 /// Waits are on the ROS clock (simulated time when /use_sim_time is set), with a guard on the wall
 /// clock: when the ROS clock stops for kClockStalled, a wait gives up (the physics node died or paused).
+/// In lockstep (holdSimulation) every goal is sent while the simulation waits and taken by the controller before
+/// the client steps on; the gripper goals fall at their exact simulated times; so a run repeats bit for bit.
 /// cancel() may be called from any thread (a signal's flag, polled): the running goals are cancelled.
 class RobotControllers
 {
@@ -79,6 +85,11 @@ public:
   /// \a interrupted (optional, e.g. set by a SIGINT handler) cancels like cancel() once it is true.
   RobotControllers(const std::string& robot, bool real, const std::atomic<bool>* interrupted = nullptr);
   ~RobotControllers();
+
+  /// \brief Lockstep from here on: \a sim holds the simulation paused (the caller paused it); every wait steps it.
+  void holdSimulation(vrrw_physics::LockstepClient& sim) { sim_ = &sim; }
+  /// \brief The ROS clock; in lockstep the simulated time where the simulation waits.
+  ros::Time now() const;
 
   /// \brief Waits up to \a seconds (wall) for both actions (and, real, the confirmation service); throws
   /// DemoError naming what does not answer.
@@ -111,8 +122,14 @@ private:
 
   /// One confirmation attempt; true once the controller relayed the goal to the real driver.
   bool tryConfirm();
-  /// Sleeps \a seconds on the ROS clock; false when cancelled or the clock stalled meanwhile.
+  /// Sleeps \a seconds on the ROS clock (lockstep: steps them); false when cancelled or the clock stalled
+  /// (lockstep: a step failed) meanwhile.
   bool pause(double seconds);
+  /// runArm in lockstep: steps to each gripper goal's time, sends it, then steps until every controller is idle.
+  GoalOutcome runArmLockstep(const ArmMotion& motion, double slack, const Progress& progress);
+  /// Lockstep: waits (wall clock, bounded) until \a client's goal left PENDING, so a step starts it.
+  template <class Client>
+  bool taken(Client& client);
   GoalOutcome armOutcome();
 
   std::string ns_;
@@ -122,6 +139,7 @@ private:
   GripperClient gripper_;
   std::string confirm_service_;
   std::unique_ptr<vrrw_common::PersistentServices> services_;  ///< the confirmation, every kConfirmPeriod
+  vrrw_physics::LockstepClient* sim_ = nullptr;  ///< set by holdSimulation(): every wait steps it
   std::string confirm_message_;
   std::mutex state_mutex_;
   sensor_msgs::JointState latest_state_;  ///< PROTECTED BY state_mutex_

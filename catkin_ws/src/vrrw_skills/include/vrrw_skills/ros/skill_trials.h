@@ -1,6 +1,9 @@
 #pragma once
-// Trials of a skill on a running physics workspace: the object put at a pose, the skill run, judged by the
-// demo's rule (lifted, released near the demonstrated place, no arm link but the fingers touched anything).
+// Trials of a skill on a running physics workspace in lockstep: the object put at a pose, the skill run, judged by
+// the demo's rule (lifted, released near the demonstrated place, no arm link but the fingers touched anything).
+// Every observation is taken at simulated stamps (the TCP and the object every 0.1 s, the contacts between the
+// trial's start and end), so the same poses give the same trials bit for bit.
+#include <condition_variable>
 #include <functional>
 #include <mutex>
 #include <set>
@@ -25,9 +28,13 @@ class SkillTrials
 {
 public:
   /// \brief \a obstacles: the scene's objects (an arm link other than a finger touching one fails a trial);
-  /// \a object: the scene object the skill picks. The arm's joints now are its home between trials.
+  /// \a object: the scene object the skill picks. The arm's joints now are its home between trials. The arm holds
+  /// the simulation (WorkspaceArm::holdSimulation); throws SkillError otherwise.
   SkillTrials(ros::NodeHandle& node, const Skill& skill, WorkspaceArm& arm, ArmServices& kinematics,
               vrrw_common::PersistentServices& services, std::string object, std::set<std::string> obstacles);
+  ~SkillTrials();
+  SkillTrials(const SkillTrials&) = delete;
+  SkillTrials& operator=(const SkillTrials&) = delete;
 
   /// \brief Trial \a index with the object at \a pose (on the table as the demonstration's start stood): the arm
   /// home and open, the object placed, the skill run, the outcome judged. Progress lines through \a progress,
@@ -40,7 +47,10 @@ public:
 
 private:
   void onContacts(const vrrw_physics::Contacts::ConstPtr& message);
-  void onSample(const ros::TimerEvent&);
+  /// At every stop of the simulation: the TCP and the object at each sample time up to \a stop.
+  void sample(const ros::Time& stop);
+  /// The trial's observation ends at simulated \a end: waits (wall clock, bounded) for the contacts published there.
+  void stopWatching(const ros::Time& end);
   void reset(const Eigen::Isometry3d& object, const std::function<void(const std::string&)>& progress);
   void goHome();
 
@@ -51,12 +61,17 @@ private:
   std::string object_;
   std::set<std::string> obstacles_;
   std::vector<double> home_;
-  ros::Subscriber contacts_;
-  ros::Timer sampler_;
+  int stop_observer_ = -1;  ///< sample() among the simulation's stop observers
 
   std::mutex mutex_;                    ///< protects the observation below
+  std::condition_variable contacts_arrived_;  ///< a contacts message arrived (stopWatching waits for it)
   bool watching_ = false;               ///< PROTECTED BY mutex_
+  ros::Time watch_from_, watch_until_;  ///< PROTECTED BY mutex_: contacts stamped in (from, until] count
+  ros::Time next_sample_;               ///< PROTECTED BY mutex_: simulated time of the next sample
+  ros::Time contacts_stamp_;            ///< PROTECTED BY mutex_: the latest contacts message's stamp
   TrialObservation seen_;               ///< PROTECTED BY mutex_
-  std::vector<Eigen::Vector3d> path_;   ///< PROTECTED BY mutex_: the TCP at 10 Hz
+  std::vector<Eigen::Vector3d> path_;   ///< PROTECTED BY mutex_: the TCP every 0.1 s of simulated time
+
+  ros::Subscriber contacts_;  ///< last: destroyed first, so no callback runs into freed members
 };
 }  // namespace vrrw_skills
