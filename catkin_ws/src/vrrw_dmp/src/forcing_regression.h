@@ -52,6 +52,4 @@ AmplitudeScaling scalingFor(double offset, double amplitude, const DmpParameters
 /// \brief FNV-1a 64 over the bit patterns of \a values, as 16 hex digits (a demonstration's checksum).
 std::string checksumOf(const std::vector<double>& values);
 
-/// \brief The current UTC time, ISO 8601.
-std::string utcNow();
 }  // namespace vrrw_dmp

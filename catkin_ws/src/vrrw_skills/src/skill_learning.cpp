@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <map>
 #include <memory>
 
 #include <vrrw_demos/demo_error.h>
 #include <vrrw_demos/tcp_kinematics.h>
+#include <vrrw_dmp/dmp.h>
 #include <vrrw_dmp/dmp_error.h>
 #include <vrrw_skills/poses.h>
 #include <vrrw_skills/skill_error.h>
@@ -307,16 +307,6 @@ std::vector<SkillInstruction> mean(const std::vector<std::vector<SkillInstructio
   return out;
 }
 
-std::string utcNow()
-{
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char buffer[32];
-  std::strftime(buffer, sizeof(buffer), "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return buffer;
-}
-
 void checkSameTask(const Taught& first, const Taught& other)
 {
   if (other.track->robot != first.track->robot || other.track->joint_names != first.track->joint_names)
@@ -450,7 +440,7 @@ Skill learnSkill(const std::vector<Demonstration>& demos, const LearnOptions& op
     skill.place_start = averagePose(places);
   skill.object_in_hand = averagePose(in_hand);
   skill.instructions = mean(all);
-  skill.created = utcNow();
+  skill.created = vrrw_dmp::utcNow();
   skill.tool = "vrrw_skills 0.1.0";
   return skill;
 }

@@ -19,6 +19,9 @@ struct DmpProvenance
   std::string demo_checksum;  ///< FNV-1a 64 of the demonstration's times and positions, hex
 };
 
+/// \brief The current UTC time, ISO 8601: a provenance's `created` (also a skill's).
+std::string utcNow();
+
 /// \brief Integration state of a rollout; created by Dmp::begin, advanced by Dmp::step without allocating.
 struct DmpState
 {
