@@ -21,8 +21,24 @@ public:
     publish();
   }
 
-  /// A controller to wait for at every tick: its joint_states `log` and its control period in seconds.
-  void follow(const JointStateLog& log, double period) { followers_.push_back({ &log, ros::Duration(period) }); }
+  /// A controller to wait for at every tick: its joint_states `log` and its control period in seconds. First waits
+  /// (advancing the clock, at most 30 s of wall time) for its first message: a state published before the test's
+  /// subscription was connected is lost, and with the clock held the controller would publish no other.
+  void follow(const JointStateLog& log, double period)
+  {
+    for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(30.0); log.newest().isZero();)
+    {
+      if (ros::WallTime::now() > end || !ros::ok())
+      {
+        ADD_FAILURE() << "no joint_states from a controller to follow";
+        failed_ = true;
+        return;
+      }
+      advance(tick_);
+      ros::WallDuration(0.01).sleep();
+    }
+    followers_.push_back({ &log, ros::Duration(period) });
+  }
 
   /// The simulated time published last.
   ros::Time now() const { return now_; }

@@ -263,7 +263,8 @@ TEST(Grasping, Ur5eWith2F85LiftsAndCarriesACubeByFriction)
             << " mm of the TCP, slipped " << r.max_slip << " mm\n";
   EXPECT_NEAR(r.lifted, 0.2, 0.005);
   EXPECT_NEAR(r.carried, 0.3, 0.005);
-  // the README's target is 5 mm; deterministic: centre 0.114 mm from the TCP, 0.170 mm slip measured
+  // the README's target is 5 mm; deterministic: centre 0.216 mm from the TCP, 0.346 mm slip measured (0.114 mm,
+  // 0.170 mm before issue 22's solver order)
   EXPECT_LT(r.max_offset, 0.35);
   EXPECT_LT(r.max_slip, 0.5);
 }
@@ -290,7 +291,7 @@ TEST(Grasping, Ur5eWith2F85LiftsAndCarriesTheDrillByItsBody)
   EXPECT_NEAR(r.lifted, 0.2, 0.005);
   EXPECT_NEAR(r.carried, 0.3, 0.005);
   // The TCP is the pad centre of the closed gripper; on the 64 mm housing the pads sit lower along
-  // the tool axis, so the grasp point is judged by how far it slips in the TCP frame: 0.272 mm measured
+  // the tool axis, so the grasp point is judged by how far it slips in the TCP frame: 0.276 mm measured
   // (target 5 mm).
   EXPECT_LT(r.max_slip, 0.8);
 }
@@ -328,7 +329,9 @@ TEST(Grasping, Ur5eWith2F85HoldsTheDrillAtSixPlacements)
     worst = std::max(worst, r.max_slip);
   }
   std::cout << "six placements: largest slip " << worst << " mm\n";
-  EXPECT_LT(worst, 1.0);  // deterministic: 0.27-0.57 mm measured (target 5 mm)
+  // deterministic: 0.12-1.14 mm measured with the joint rows after the contacts (issue 22), 0.27-0.57 mm before
+  // (target 5 mm)
+  EXPECT_LT(worst, 2.0);
 }
 
 TEST(Grasping, Ur10eWith2F140LiftsAndCarriesThe10cmCube)
@@ -350,7 +353,7 @@ TEST(Grasping, Ur10eWith2F140LiftsAndCarriesThe10cmCube)
             << " m, centre within " << r.max_offset << " mm of the TCP, slipped " << r.max_slip << " mm\n";
   EXPECT_NEAR(r.lifted, 0.2, 0.005);
   EXPECT_NEAR(r.carried, 0.3, 0.005);
-  EXPECT_LT(r.max_slip, 1.2);  // deterministic: 0.409 mm measured (target 5 mm)
+  EXPECT_LT(r.max_slip, 0.008);  // deterministic: 0.0024 mm measured (0.41 mm before issue 22's solver order; target 5 mm)
 }
 
 namespace
