@@ -150,7 +150,7 @@ TEST(FakeOperator, StreamedCommandsAreFollowedWithinTheLimits)
   const auto run = ur3e->states.since(start);
   expectWithinLimits(run, "streamed commands", kVelocityLimit, kAccelerationLimit);
   std::cout << "streamed sine: largest distance from the streamed path " << worst_path << " rad" << std::endl;
-  EXPECT_LT(worst_path, 2e-3);
+  EXPECT_LT(worst_path, 3.5e-4);  // 1.0e-4 rad measured on simulated time (1.1e-4 on the wall clock; was < 2e-3)
   const auto q1 = ur3e->q();
   for (size_t j = 0; j < 6; ++j)
     EXPECT_NEAR(q1[j], q0[j] + 0.4, 1e-9);

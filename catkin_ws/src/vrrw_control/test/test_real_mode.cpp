@@ -133,7 +133,9 @@ TEST(RealMode, RelaysOnlyAfterSimulationAndConfirmationByteIdentical)
     EXPECT_EQ(arm->getState(), State::ACTIVE);
     confirmed = confirm(message);
     if (!confirmed)
+    {
       ASSERT_NE(message.find("still running in simulation"), std::string::npos) << message;
+    }
   }
   EXPECT_TRUE(confirmed) << message;
   ASSERT_TRUE(arm->waitForResult(ros::Duration(5.0)));
