@@ -1,5 +1,8 @@
 #pragma once
 // Helpers shared by the node tests: a joint_states recorder and goal builders.
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <iostream>
 #include <mutex>
@@ -61,14 +64,32 @@ public:
     return false;
   }
 
+  /// The latest stamp received (zero before the first message).
+  ros::Time newest() const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return newest_;
+  }
+
+  /// Waits (wall clock, at most `seconds`) until a message stamped after `stamp` has arrived.
+  bool waitNewer(const ros::Time& stamp, double seconds) const
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    return arrived_.wait_for(lock, std::chrono::duration<double>(seconds), [&] { return newest_ > stamp; });
+  }
+
 private:
   void onMsg(const sensor_msgs::JointState& m)
   {
     std::lock_guard<std::mutex> lock(mutex_);
     log_.push_back(m);
+    newest_ = std::max(newest_, m.header.stamp);
+    arrived_.notify_all();
   }
-  mutable std::mutex mutex_;
+  mutable std::mutex mutex_;  ///< protects log_ and newest_ (written by the spinner, read by the test)
+  mutable std::condition_variable arrived_;  ///< notified with every message
   std::vector<sensor_msgs::JointState> log_;
+  ros::Time newest_;
   ros::Subscriber sub_;
 };
 

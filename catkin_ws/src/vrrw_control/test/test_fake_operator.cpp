@@ -1,5 +1,6 @@
 // Node test (rostest, real master): the interfaces the operator flow needs, on the ur3e controller of
-// fake_mode.test (splicing, 1 kHz): goal bursts, the command topic, free-drive, bad tolerances.
+// fake_mode.test (splicing, 1 kHz): goal bursts, the command topic, free-drive, bad tolerances; on simulated time
+// that the test advances (test_clock.h).
 #include <actionlib/client/simple_action_client.h>
 #include <actionlib/client/action_client.h>
 #include <gtest/gtest.h>
@@ -7,7 +8,7 @@
 #include <std_msgs/Bool.h>
 #include <std_msgs/String.h>
 
-#include "ros_test_helpers.h"
+#include "test_clock.h"
 
 using namespace vrrw_control_test;
 using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;
@@ -18,6 +19,7 @@ namespace
 {
 const double kVelocityLimit = 3.14159265, kAccelerationLimit = 3.14159265;  // ur.xacro (ur3e wrists 2 pi), ur3e.yaml
 const std::string kAction = "/ur3e/arm_controller/follow_joint_trajectory";
+TestClock* sim = nullptr;
 
 struct Ur3e
 {
@@ -28,7 +30,7 @@ struct Ur3e
     , free_drive(nh.advertise<std_msgs::Bool>("/ur3e/free_drive_active", 1, true))
     , errors(nh.subscribe("/ur3e/arm_controller/errors", 100, &Ur3e::onError, this))
   {
-    EXPECT_TRUE(arm.waitForServer(ros::Duration(15.0)));
+    EXPECT_TRUE(waitForServer(*sim, arm));
   }
   std::vector<double> q()
   {
@@ -64,11 +66,6 @@ struct Ur3e
 };
 
 Ur3e* ur3e = nullptr;
-
-void waitForRest(double seconds = 0.3)
-{
-  ros::Duration(seconds).sleep();
-}
 }  // namespace
 
 TEST(FakeOperator, EveryGoalOfABurstGetsAResult)
@@ -77,11 +74,11 @@ TEST(FakeOperator, EveryGoalOfABurstGetsAResult)
   // replace the one before (preempted, the last succeeds); every one must end with a result
   ros::NodeHandle nh;
   actionlib::ActionClient<control_msgs::FollowJointTrajectoryAction> client(kAction);
-  ASSERT_TRUE(client.waitForActionServerToStart(ros::Duration(10.0)));
+  ASSERT_TRUE(waitForServer(*sim, client));
   const auto q0 = ur3e->q();
   const int burst = 1000;
+  const ros::Time start = sim->now();
   std::vector<actionlib::ClientGoalHandle<control_msgs::FollowJointTrajectoryAction>> handles;
-  const ros::WallTime start = ros::WallTime::now();
   for (int k = 0; k < burst; ++k)
   {
     auto goal = move("ur3e_", q0, { 0.001 * (k % 7), 0, 0, 0, 0, 0 }, 0.5);
@@ -90,20 +87,21 @@ TEST(FakeOperator, EveryGoalOfABurstGetsAResult)
     handles.push_back(client.sendGoal(goal));
   }
   std::map<std::string, int> ended;
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(60.0);
   int done = 0;
-  while (ros::WallTime::now() < deadline && done < burst)
-  {
-    ros::WallDuration(0.05).sleep();
-    done = 0;
-    for (auto& h : handles)
-      done += h.getCommState() == actionlib::CommState::DONE;
-  }
+  sim->advanceUntil(
+      [&] {
+        done = 0;
+        for (auto& h : handles)
+          done += h.getCommState() == actionlib::CommState::DONE;
+        return done == burst;
+      },
+      60.0, 0.05);
+  const double seconds = (sim->now() - start).toSec();
   for (auto& h : handles)
     if (h.getCommState() == actionlib::CommState::DONE)
       ++ended[h.getTerminalState().toString()];
-  std::cout << "burst: " << done << " of " << burst << " goals ended with a result in "
-            << (ros::WallTime::now() - start).toSec() << " s:";
+  std::cout << "burst: " << done << " of " << burst << " goals ended with a result in " << seconds
+            << " s of simulated time:";
   for (const auto& [state, count] : ended)
     std::cout << " " << state << " " << count;
   std::cout << std::endl;
@@ -119,8 +117,7 @@ TEST(FakeOperator, StreamedCommandsAreFollowedWithinTheLimits)
   // which the splice stretches to the limits
   const auto q0 = ur3e->q();
   auto sine = [&q0](double t, size_t j) { return q0[j] + 0.3 * (j % 2 ? -1.0 : 1.0) * std::sin(M_PI_2 * t); };
-  const ros::Time start = ros::Time::now();
-  ros::WallRate rate(100.0);
+  const ros::Time start = sim->now();
   std::vector<double> target = q0, velocity(6);
   for (int k = 0; k < 300; ++k)
   {
@@ -131,7 +128,7 @@ TEST(FakeOperator, StreamedCommandsAreFollowedWithinTheLimits)
       velocity[j] = 0.3 * (j % 2 ? -1.0 : 1.0) * M_PI_2 * std::cos(M_PI_2 * ahead);
     }
     ur3e->stream(target, 0.05, t < 2.0 ? velocity : std::vector<double>{});
-    rate.sleep();
+    sim->advance(0.01);  // 100 Hz of simulated time
   }
   // during the sine the arm stays on its path: distance of each sample to the nearest point of the curve
   double worst_path = 0.0;
@@ -149,11 +146,11 @@ TEST(FakeOperator, StreamedCommandsAreFollowedWithinTheLimits)
     }
     worst_path = std::max(worst_path, nearest);
   }
-  ros::Duration(1.5).sleep();
+  sim->advance(1.5);
   const auto run = ur3e->states.since(start);
   expectWithinLimits(run, "streamed commands", kVelocityLimit, kAccelerationLimit);
   std::cout << "streamed sine: largest distance from the streamed path " << worst_path << " rad" << std::endl;
-  EXPECT_LT(worst_path, 2e-3);
+  EXPECT_LT(worst_path, 3.5e-4);  // 1.0e-4 rad measured on simulated time (1.1e-4 on the wall clock; was < 2e-3)
   const auto q1 = ur3e->q();
   for (size_t j = 0; j < 6; ++j)
     EXPECT_NEAR(q1[j], q0[j] + 0.4, 1e-9);
@@ -170,10 +167,10 @@ TEST(FakeOperator, BadCommandsArePublishedAsErrorsAndAnEmptyOneStops)
   auto far = q0;
   far[0] += 1.5;
   ur3e->stream(far, 2.0);
-  ros::Duration(0.8).sleep();
+  sim->advance(0.8);
   ur3e->command.publish(trajectory_msgs::JointTrajectory());  // stop
-  const ros::Time stop = ros::Time::now();
-  ros::Duration(1.5).sleep();
+  const ros::Time stop = sim->now();
+  sim->advance(1.5);
   {
     std::lock_guard<std::mutex> lock(ur3e->mutex);
     ASSERT_FALSE(ur3e->error_log.empty());
@@ -193,9 +190,9 @@ TEST(FakeOperator, AOnePointGoalFarAwayIsBlendedNotRefused)
   q[1] -= 0.6;
   g.trajectory.points = { point(0.0, q) };
   ur3e->arm.sendGoal(g);
-  ASSERT_TRUE(ur3e->arm.waitForResult(ros::Duration(10.0)));
+  ASSERT_TRUE(sim->advanceUntilDone(ur3e->arm, 10.0));
   EXPECT_EQ(ur3e->arm.getState(), State::SUCCEEDED) << ur3e->arm.getResult()->error_string;
-  ros::Duration(0.05).sleep();
+  sim->advance(0.05);
   EXPECT_NEAR(ur3e->q()[1], q[1], 1e-9);
 }
 
@@ -203,30 +200,31 @@ TEST(FakeOperator, FreeDriveAbortsRejectsAcceptsCommandsAndHoldsWhenItEnds)
 {
   const auto q0 = ur3e->q();
   ur3e->arm.sendGoal(move("ur3e_", q0, { 0.8, 0, 0, 0, 0, 0 }, 3.0));
-  ros::Duration(0.5).sleep();
+  ASSERT_TRUE(waitTaken(ur3e->arm));
+  sim->advance(0.5);
   ur3e->setFreeDrive(true);
-  ASSERT_TRUE(ur3e->arm.waitForResult(ros::Duration(5.0)));
+  ASSERT_TRUE(sim->advanceUntilDone(ur3e->arm, 5.0));
   EXPECT_EQ(ur3e->arm.getState(), State::ABORTED);
   EXPECT_EQ(ur3e->arm.getResult()->error_string, "aborted: free-drive active");
   ur3e->arm.sendGoal(move("ur3e_", ur3e->q(), { 0.1, 0, 0, 0, 0, 0 }, 1.0));
-  ASSERT_TRUE(ur3e->arm.waitForResult(ros::Duration(5.0)));
+  ASSERT_TRUE(sim->advanceUntilDone(ur3e->arm, 5.0));
   EXPECT_EQ(ur3e->arm.getState(), State::REJECTED);
   EXPECT_EQ(ur3e->arm.getResult()->error_string, "free-drive active");
 
-  waitForRest(1.0);
+  sim->advance(1.0);  // at rest
   auto target = ur3e->q();
   target[0] -= 1.0;
   ur3e->stream(target, 1.5);  // fake-mode free-drive moves the arm through the command topic
-  ros::Duration(0.9).sleep();
-  const ros::Time off = ros::Time::now();
+  sim->advance(0.9);
+  const ros::Time off = sim->now();
   ur3e->setFreeDrive(false);  // mid-motion: brought to rest where it is, no jump, no swing back
-  ros::Duration(1.5).sleep();
+  sim->advance(1.5);
   const auto after = ur3e->states.since(off - ros::Duration(0.05));
   expectWithinLimits(after, "free-drive off mid-motion", kVelocityLimit, kAccelerationLimit);
   EXPECT_GT(after.back().position[0], target[0] + 0.05) << "it went on to the command's target";
   EXPECT_LE(after.back().position[0], after.front().position[0]) << "it swung back";
   ur3e->arm.sendGoal(move("ur3e_", ur3e->q(), { 0.05, 0, 0, 0, 0, 0 }, 0.5));
-  ASSERT_TRUE(ur3e->arm.waitForResult(ros::Duration(5.0)));
+  ASSERT_TRUE(sim->advanceUntilDone(ur3e->arm, 5.0));
   EXPECT_EQ(ur3e->arm.getState(), State::SUCCEEDED);
 }
 
@@ -238,14 +236,14 @@ TEST(FakeOperator, NanPathToleranceAndNegativeGoalTimeToleranceAreNamed)
   tolerance.position = std::nan("");
   g.path_tolerance = { tolerance };
   ur3e->arm.sendGoal(g);
-  ASSERT_TRUE(ur3e->arm.waitForResult(ros::Duration(5.0)));
+  ASSERT_TRUE(sim->advanceUntilDone(ur3e->arm, 5.0));
   EXPECT_EQ(ur3e->arm.getState(), State::REJECTED);
   EXPECT_EQ(ur3e->arm.getResult()->error_code, Result::INVALID_GOAL);
   EXPECT_EQ(ur3e->arm.getResult()->error_string, "path_tolerance[0] (joint ur3e_elbow_joint): position is not finite");
   g.path_tolerance.clear();
   g.goal_time_tolerance = ros::Duration(-1.0);
   ur3e->arm.sendGoal(g);
-  ASSERT_TRUE(ur3e->arm.waitForResult(ros::Duration(5.0)));
+  ASSERT_TRUE(sim->advanceUntilDone(ur3e->arm, 5.0));
   EXPECT_EQ(ur3e->arm.getState(), State::REJECTED);
   EXPECT_EQ(ur3e->arm.getResult()->error_string, "goal_time_tolerance -1 s: must be >= 0 (0: the default)");
 }
@@ -257,10 +255,16 @@ int main(int argc, char** argv)
   ros::NodeHandle nh;
   ros::AsyncSpinner spinner(2);
   spinner.start();
+  // ticks of 5 ms: the UR3e cycles at each (200 Hz of simulated time), which every check here allows, at a fifth
+  // of the cost of 1 ms ticks on a loaded machine. First, since the controllers start at the clock's first tick.
+  TestClock clock(nh, ros::Time(1000.0), 0.005);
+  sim = &clock;
   // the controller sizes its clients' queues for bursts; clients of this process come after it
   while (ros::ok() && !nh.hasParam(kAction + "/actionlib_client_pub_queue_size"))
     ros::WallDuration(0.05).sleep();
   Ur3e robot(nh);
+  clock.follow(robot.states, 0.005);  // a cycle at every tick
+  clock.advance(0.1);                 // the first states
   ur3e = &robot;
   return RUN_ALL_TESTS();
 }

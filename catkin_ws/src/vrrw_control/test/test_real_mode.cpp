@@ -115,18 +115,29 @@ std::vector<double> armNow()
 
 TEST(RealMode, RelaysOnlyAfterSimulationAndConfirmationByteIdentical)
 {
-  const auto goal = move("ur5e_", armNow(), { 0.2, -0.1, 0.1, 0.0, 0.3, 0.0 }, 0.8);
+  // 3 s of simulated run: the first confirmation comes while it runs, however slow the machine
+  const auto goal = move("ur5e_", armNow(), { 0.2, -0.1, 0.1, 0.0, 0.3, 0.0 }, 3.0);
   std::vector<std::string> feedback_names;
   arm->sendGoal(goal, ArmClient::SimpleDoneCallback(), ArmClient::SimpleActiveCallback(),
                 [&](const control_msgs::FollowJointTrajectoryFeedbackConstPtr& f) { feedback_names = f->joint_names; });
-  ros::Duration(0.2).sleep();
+  for (int i = 0; i < 500 && arm->getState() == State::PENDING; ++i)
+    ros::WallDuration(0.002).sleep();
   std::string message;
   EXPECT_FALSE(confirm(message));
   EXPECT_NE(message.find("still running in simulation"), std::string::npos) << message;
-  ros::Duration(1.3).sleep();  // the simulated run is over; waiting for the person
-  EXPECT_EQ(arm->getState(), State::ACTIVE);
-  EXPECT_EQ(driver->received().size(), 0u) << "sent without confirmation";
-  EXPECT_TRUE(confirm(message)) << message;
+  // asked again until the simulated run is over: until then every answer says it still runs and nothing is sent
+  bool confirmed = false;
+  for (int i = 0; i < 500 && !confirmed; ++i, ros::WallDuration(0.02).sleep())
+  {
+    EXPECT_EQ(driver->received().size(), 0u) << "sent without confirmation";
+    EXPECT_EQ(arm->getState(), State::ACTIVE);
+    confirmed = confirm(message);
+    if (!confirmed)
+    {
+      ASSERT_NE(message.find("still running in simulation"), std::string::npos) << message;
+    }
+  }
+  EXPECT_TRUE(confirmed) << message;
   ASSERT_TRUE(arm->waitForResult(ros::Duration(5.0)));
   EXPECT_EQ(arm->getState(), State::SUCCEEDED);
   EXPECT_EQ(arm->getResult()->error_string, "stand-in executed");

@@ -23,6 +23,7 @@
 #include <sensor_msgs/JointState.h>
 #include <vrrw_msgs/DemoAnnotate.h>
 #include <vrrw_msgs/DemoStart.h>
+#include <vrrw_msgs/DemoStatus.h>
 #include <vrrw_msgs/DemoStop.h>
 
 #include "file_text.h"
@@ -138,10 +139,16 @@ TEST(Recorder, KeepsEveryMessageOfFourRobotsAt1kHz)
   note.request.text = "start of the lossless run";
   ASSERT_TRUE(vrrw_common::services().tryCall("/demos/annotate", note));
   EXPECT_TRUE(note.response.success);
+  std::atomic<std::uint64_t> written{ 0 };
+  ros::Subscriber status = nh.subscribe<vrrw_msgs::DemoStatus>(
+      "/demos/status", 10, [&](const vrrw_msgs::DemoStatusConstPtr& m) { written = m->messages; });
   const ros::WallTime begin = ros::WallTime::now();
   publishers.publish(10000, 1000.0);
   const double seconds = (ros::WallTime::now() - begin).toSec();
-  ros::Duration(0.5).sleep();
+  // stopped once the recorder says it wrote them all (its status comes once a second), not after a fixed
+  // wait a loaded machine may outlast; 60 s only guards against a hang
+  for (int k = 0; k < 600 && written < 40002; ++k)  // 4 x 10000, the metadata and the note
+    ros::WallDuration(0.1).sleep();
   vrrw_msgs::DemoStop stop;
   ASSERT_TRUE(vrrw_common::services().tryCall("/demos/stop", stop));
   EXPECT_TRUE(stop.response.success) << stop.response.message;

@@ -58,7 +58,14 @@ TEST(WorkspaceRecorder, UpStartsTheRecorderIdleAndItRecordsTheScenesRobot)
   EXPECT_TRUE(call.response.success) << call.response.message;
   EXPECT_NE(std::find(call.response.topics.begin(), call.response.topics.end(), "/ur5e/joint_states"),
             call.response.topics.end());
-  ros::Duration(1.0).sleep();
+  // recording until its status (once a second) counts more than 50 messages: a second of the fake controller's
+  // joint_states at 100 Hz and tf on a quiet machine; 60 s only guards against a hang
+  const auto written = [&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    return statuses.back().recording ? statuses.back().messages : 0u;
+  };
+  for (int k = 0; k < 600 && written() <= 50u; ++k)
+    ros::WallDuration(0.1).sleep();
   vrrw_msgs::DemoStop stopped;
   ASSERT_TRUE(vrrw_common::services().tryCall("/demos/stop", stopped));
   EXPECT_TRUE(stopped.response.success) << stopped.response.message;

@@ -8,6 +8,7 @@ import re
 import shlex
 import subprocess
 import tempfile
+import time
 import unittest
 
 import yaml
@@ -26,13 +27,18 @@ class QuickDemoTest(unittest.TestCase):
     def setUpClass(cls):
         # a report folder whose name a shell would run: the frames are captured without one
         cls.out = tempfile.mkdtemp(prefix="vrrw_demo_test_';touch PWNED;'")
+        start = time.monotonic()
         cls.result = demo('--quick', '--seed', '3', '--out', cls.out)
+        cls.seconds = time.monotonic() - start
         print(cls.result.stdout[-4000:])
         with open(os.path.join(cls.out, 'metrics.json')) as f:
             cls.metrics = json.load(f)
 
-    def test_runs(self):
+    def test_runs_to_its_report(self):
         self.assertEqual(self.result.returncode, 0, self.result.stderr[-2000:])
+        print(f'./vrrw demo --quick: {self.seconds:.1f} s from the command to the report (runner '
+              f'{self.metrics["wall_seconds"]:.1f} s, physics rtf {self.metrics["physics"]["rtf"]:.1f}; '
+              f'load average {os.getloadavg()[0]:.1f})')
         self.assertNotIn('TF_REPEATED_DATA', self.result.stdout + self.result.stderr)
 
     def test_teach_and_segments(self):
@@ -90,11 +96,13 @@ class QuickDemoTest(unittest.TestCase):
     def test_dmp_trials(self):
         dmp = self.metrics['dmp']
         self.assertEqual(dmp['trials'], 3)
-        self.assertGreaterEqual(dmp['success_rate'], 2.0 / 3.0 - 1e-9, dmp['failures'])
-        self.assertEqual(len(dmp['failures']), round(3 * (1 - dmp['success_rate'])))
+        # the target is 90 %: 2 of 3 would be a regression. Measured: 3 of 3 in every quick run (README: 4 runs;
+        # two test runs of main on this machine: final drill 1.1-2.0 mm from the place)
+        self.assertEqual(dmp['success_rate'], 1.0, dmp['failures'])
+        self.assertEqual(len(dmp['failures']), 0)
         for trial in dmp['trial_results']:
-            if trial['success']:
-                self.assertLess(trial['final_error_m'], 0.03)
+            print(f"trial {trial.get('trial')}: final drill {trial['final_error_m'] * 1e3:.1f} mm from the place")
+            self.assertLess(trial['final_error_m'], 0.01)
 
     def test_skill_grasp_as_the_script_meant_it(self):
         # issue 19: the grasp skill learn finds in the bag within 2 mm / 1 deg of the teach script's own

@@ -1,5 +1,6 @@
 #pragma once
 // What the node tests share: the scene's arm for FK, the latest ghost and robot states, the event log.
+#include <functional>
 #include <gtest/gtest.h>
 #include <mutex>
 #include <ros/ros.h>
@@ -78,6 +79,17 @@ struct SceneArm
   Eigen::VectorXd state;
   vrrw_kinematics::Arm arm;
 };
+
+/// Waits until `done` holds: the verdict is the condition; `bound` (wall clock) only keeps a broken node from
+/// hanging the test, so it is generous (a loaded machine delays messages by tenths of a second, not by 10 s).
+inline bool eventually(const std::function<bool()>& done, double bound = 10.0)
+{
+  for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(bound); ros::WallTime::now() < end;
+       ros::WallDuration(0.01).sleep())
+    if (done())
+      return true;
+  return done();
+}
 
 template <class Service>
 Service call(const std::string& name, Service srv = Service())

@@ -53,8 +53,7 @@ struct Cell
   Eigen::VectorXd ghostQ()
   {
     const ros::Time now = ros::Time::now();
-    for (int i = 0; i < 100 && ghost.last().header.stamp < now; ++i)
-      ros::WallDuration(0.005).sleep();
+    EXPECT_TRUE(eventually([&] { return ghost.last().header.stamp >= now; })) << "no ghost state since " << now;
     return arm6(ghost.last());
   }
   bool hasEvent(const std::string& kind)
@@ -117,8 +116,7 @@ TEST(InteractionFake, SetPoseInAnyFrameIsReachedAndRefusalsLeaveTheGhost)
   const auto colliding = cell->setPose(low);
   EXPECT_FALSE(colliding.response.success);
   EXPECT_EQ(colliding.response.message.rfind("collision: ", 0), 0u) << colliding.response.message;
-  ros::WallDuration(0.2).sleep();
-  EXPECT_EQ(cell->ghostQ(), before);
+  EXPECT_EQ(cell->ghostQ(), before);  // a ghost state published after both refusals
 }
 
 TEST(InteractionFake, BadInputIsOneLineNamingTheFieldAndMovesNothing)
@@ -177,18 +175,20 @@ TEST(InteractionFake, MarkerDragMovesTheGhostAndAnUnreachablePoseTurnsItRed)
     cell->feedback.publish(f);
     ros::WallDuration(0.01).sleep();
   }
-  ros::WallDuration(0.3).sleep();
+  // latest wins: the ghost ends at the last pose, however many of the drag's poses the node took on the way
+  EXPECT_TRUE(eventually([&] { return (cell->arm.tcp(cell->ghostQ()).translation() - target.translation()).norm() < 1e-6; }));
   EXPECT_LT((cell->arm.tcp(cell->ghostQ()).translation() - target.translation()).norm(), 1e-6);
   const Eigen::VectorXd before = cell->ghostQ();
   target.translation().x() += 3.0;
   f.pose = tf2::toMsg(target);
   cell->feedback.publish(f);
-  bool red = false;
-  for (int i = 0; i < 100 && !red; ++i, ros::WallDuration(0.02).sleep())
+  EXPECT_TRUE(eventually([&] {
     for (const auto& update : cell->updates.all())
       for (const auto& marker : update.markers)
-        red = red || marker.description.find("unreachable (residual") != std::string::npos;
-  EXPECT_TRUE(red);
+        if (marker.description.find("unreachable (residual") != std::string::npos)
+          return true;
+    return false;
+  })) << "the marker never said unreachable";
   EXPECT_EQ(cell->ghostQ(), before);
 }
 
@@ -239,7 +239,7 @@ TEST(InteractionFake, PlanThroughTwoWaypointsAndExecuteEndsAtTheGhost)
   const auto execute = call<vrrw_msgs::GhostExecute>("/ur5e/ghost/execute");
   ASSERT_TRUE(execute.response.success) << execute.response.message;
   EXPECT_EQ(execute.response.error_code, 0);
-  ros::WallDuration(0.1).sleep();
+  EXPECT_TRUE(eventually([&] { return (arm6(cell->robot.last()) - goal).cwiseAbs().maxCoeff() < 1e-6; }));
   EXPECT_LT((arm6(cell->robot.last()) - goal).cwiseAbs().maxCoeff(), 1e-6);
   EXPECT_TRUE(cell->hasEvent("plan"));
   EXPECT_TRUE(cell->hasEvent("execute"));
@@ -264,7 +264,7 @@ TEST(InteractionFake, FreeDriveFollowsAHandAndStopsWhereItIs)
     pose.pose = tf2::toMsg(hand);
     cell->hand_pose.publish(pose);
   };
-  for (int i = 0; i < 150 && cell->hand_grip.getNumSubscribers() == 0; ++i, ros::WallDuration(0.02).sleep())
+  for (int i = 0; i < 500 && cell->hand_grip.getNumSubscribers() == 0; ++i, ros::WallDuration(0.02).sleep())
     send();  // the node finds /operator/<hand>/pose topics once a second
   ASSERT_GT(cell->hand_grip.getNumSubscribers(), 0u);
   for (int i = 0; i < 20; ++i, ros::WallDuration(0.02).sleep())
@@ -276,25 +276,23 @@ TEST(InteractionFake, FreeDriveFollowsAHandAndStopsWhereItIs)
   EXPECT_FALSE(cell->hasEvent("grab"));
   grip.data = 1.0;
   cell->hand_grip.publish(grip);
-  ros::WallDuration(0.1).sleep();
-  ASSERT_TRUE(cell->hasEvent("grab"));
+  ASSERT_TRUE(eventually([&] { return cell->hasEvent("grab"); }));
   const Eigen::Vector3d tcp0 = cell->arm.tcp(q0).translation();
   for (int i = 0; i < 50; ++i, ros::WallDuration(0.02).sleep())  // 5 cm up in 1 s
   {
     hand.translation().z() += 0.001;
     send();
   }
-  ros::WallDuration(0.5).sleep();
-  const Eigen::Vector3d moved = cell->arm.tcp(arm6(cell->robot.last())).translation() - tcp0;
+  const auto moved_by = [&] { return Eigen::Vector3d(cell->arm.tcp(arm6(cell->robot.last())).translation() - tcp0); };
+  EXPECT_TRUE(eventually([&] { return std::abs(moved_by().z() - 0.05) < 0.005; }));  // the hand's last pose reached
+  const Eigen::Vector3d moved = moved_by();
   EXPECT_NEAR(moved.z(), 0.05, 0.005);
   EXPECT_LT(moved.head<2>().norm(), 0.005);
   grip.data = 0.0;
   cell->hand_grip.publish(grip);
-  ros::WallDuration(0.1).sleep();
-  EXPECT_TRUE(cell->hasEvent("release"));
+  EXPECT_TRUE(eventually([&] { return cell->hasEvent("release"); }));
   ASSERT_TRUE(call<std_srvs::SetBool>("/ur5e/free_drive").response.success);
-  ros::WallDuration(0.2).sleep();
-  EXPECT_FALSE(cell->active.last().data);
+  EXPECT_TRUE(eventually([&] { return !cell->active.last().data; }));
   const Eigen::VectorXd held = arm6(cell->robot.last());
   ros::WallDuration(1.0).sleep();
   EXPECT_LT((arm6(cell->robot.last()) - held).cwiseAbs().maxCoeff(), 1e-9);
@@ -318,14 +316,17 @@ TEST(InteractionFake, AStaleHandLetsGo)
   const std::size_t before = cell->events.size();
   grip.data = 0.8;
   cell->hand_grip.publish(grip);
-  ros::WallDuration(1.0).sleep();  // no pose for 1 s: a lost tracker
+  // no pose any more: a lost tracker; the node lets go once the last pose is stale
   bool grabbed = false, stale = false;
-  const auto events = cell->events.all();
-  for (std::size_t i = before; i < events.size(); ++i)
-  {
-    grabbed = grabbed || events[i].kind == "grab";
-    stale = stale || (events[i].kind == "release" && events[i].detail.find("stale") != std::string::npos);
-  }
+  EXPECT_TRUE(eventually([&] {
+    const auto events = cell->events.all();
+    for (std::size_t i = before; i < events.size(); ++i)
+    {
+      grabbed = grabbed || events[i].kind == "grab";
+      stale = stale || (events[i].kind == "release" && events[i].detail.find("stale") != std::string::npos);
+    }
+    return stale;
+  }));
   EXPECT_TRUE(grabbed);
   EXPECT_TRUE(stale);
   grip.data = 0.0;

@@ -47,8 +47,9 @@ TEST(InteractionPhysics, AGhostPlanExecutesWithinTheGoalTolerance)
   ASSERT_TRUE(plan.response.success) << plan.response.message;
   const auto execute = call<vrrw_msgs::GhostExecute>("/ur5e/ghost/execute");
   ASSERT_TRUE(execute.response.success) << execute.response.message << " " << execute.response.error_string;
-  ros::WallDuration(0.2).sleep();
   const auto& goal = plan.response.trajectory.points.back().positions;
+  const ros::Time ended = ros::Time::now();
+  ASSERT_TRUE(eventually([&] { return robot.last().header.stamp >= ended; }));  // a state from after the goal ended
   const Eigen::VectorXd q = arm6(robot.last());
   for (int j = 0; j < 6; ++j)
     EXPECT_NEAR(q[j], goal[j], 0.01) << "joint " << j;
@@ -66,15 +67,17 @@ TEST(InteractionPhysics, AnOpenHandPushesTheDrill)
   pose.pose.orientation.w = 1.0;
   const Eigen::Vector3d from = start + Eigen::Vector3d(0, -0.15, 0.03);
   pose.pose.position = tf2::toMsg(from);
-  for (int i = 0; i < 300 && pose_pub.getNumSubscribers() == 0; ++i, ros::WallDuration(0.01).sleep())
+  for (int i = 0; i < 1000 && pose_pub.getNumSubscribers() == 0; ++i, ros::WallDuration(0.01).sleep())
     pose_pub.publish(pose);  // the node finds new hands once a second
   ASSERT_GT(pose_pub.getNumSubscribers(), 0u);
-  for (int i = 0; i <= 150; ++i, ros::WallDuration(0.01).sleep())  // open hand, 20 cm along +y in 1 s, then rest
+  // paced on simulated time (/use_sim_time): the hand keeps its speed in the simulation when the machine is slow
+  for (int i = 0; i <= 150; ++i, ros::Duration(0.01).sleep())  // open hand, 20 cm along +y in 1 s, then rest
   {
     pose.header.stamp = ros::Time::now();
     pose.pose.position = tf2::toMsg(Eigen::Vector3d(from + Eigen::Vector3d(0, 0.2 * std::min(1.0, i / 100.0), 0)));
     pose_pub.publish(pose);
   }
+  eventually([&] { return (drillAt() - start).y() > 0.02; });  // the hand's last poses may still be on their way
   const Eigen::Vector3d moved = drillAt() - start;
   std::cout << "drill pushed " << moved.transpose() << " m\n";
   EXPECT_GT(moved.y(), 0.02);
@@ -89,7 +92,7 @@ TEST(InteractionPhysics, TheMouseMarkerPullsTheTcp)
     return tf2::transformToEigen(tf->lookupTransform("world", "ur5e_tcp", ros::Time(0), ros::Duration(2.0))).translation();
   };
   ros::Publisher pub = nh->advertise<visualization_msgs::InteractiveMarkerFeedback>("/free_drive/feedback", 10);
-  for (int i = 0; i < 300 && pub.getNumSubscribers() == 0; ++i)
+  for (int i = 0; i < 1000 && pub.getNumSubscribers() == 0; ++i)
     ros::WallDuration(0.01).sleep();
   const Eigen::Vector3d start = tcpAt();
   visualization_msgs::InteractiveMarkerFeedback f;
@@ -98,7 +101,7 @@ TEST(InteractionPhysics, TheMouseMarkerPullsTheTcp)
   f.marker_name = "ur5e";
   f.pose.orientation.w = 1.0;
   using F = visualization_msgs::InteractiveMarkerFeedback;
-  for (int i = 0; i <= 100; ++i, ros::WallDuration(0.01).sleep())  // down, 10 cm along -y in 0.5 s, hold
+  for (int i = 0; i <= 100; ++i, ros::Duration(0.01).sleep())  // down, 10 cm along -y in 0.5 s, hold (simulated s)
   {
     f.event_type = i == 0 ? F::MOUSE_DOWN : F::POSE_UPDATE;
     f.header.stamp = ros::Time::now();
@@ -107,6 +110,7 @@ TEST(InteractionPhysics, TheMouseMarkerPullsTheTcp)
   }
   f.event_type = F::MOUSE_UP;
   pub.publish(f);
+  eventually([&] { return std::abs((tcpAt() - start).y() + 0.1) < 0.001; });  // the pull's last pose reached
   const Eigen::Vector3d moved = tcpAt() - start;
   std::cout << "mouse pulled the TCP " << moved.transpose() << " m\n";
   EXPECT_NEAR(moved.y(), -0.1, 0.001);  // -0.100001 m measured in three runs
@@ -174,7 +178,10 @@ TEST(InteractionPhysics, AHeldDrillIsAttachedToTheGhostAndPlannedWith)
   put.request.object = "drill";
   put.request.pose = tf2::toMsg(cell.scene.object("drill")->pose);
   ASSERT_TRUE(call("/physics/set_object_pose", put).response.success) << put.response.message;
-  ros::WallDuration(0.5).sleep();
+  ASSERT_TRUE(eventually([&] {  // tf shows the drill back on its spot
+    return (tf2::transformToEigen(tf->lookupTransform("world", "drill", ros::Time(0))).translation() -
+            cell.scene.object("drill")->pose.translation()).norm() < 0.005;
+  }));
   const Eigen::Isometry3d drill =
       tf2::transformToEigen(tf->lookupTransform("world", "drill", ros::Time(0), ros::Duration(2.0)));
   ASSERT_EQ(moveTo(tcpOverDrill(drill, 0.12)), "");
@@ -253,9 +260,9 @@ std::string armTo(const std::vector<double>& q)
   if (const auto plan = call<vrrw_msgs::GhostPlan>("/ur5e/ghost/plan"); !plan.response.success)
     return "plan: " + plan.response.message;
   const auto execute = call<vrrw_msgs::GhostExecute>("/ur5e/ghost/execute");
-  ros::WallDuration(0.5).sleep();
-  const Eigen::VectorXd at = arm6(robot.last());
-  const double off = (at - Eigen::Map<const Eigen::VectorXd>(q.data(), 6)).cwiseAbs().maxCoeff();
+  const auto off_goal = [&] { return (arm6(robot.last()) - Eigen::Map<const Eigen::VectorXd>(q.data(), 6)).cwiseAbs().maxCoeff(); };
+  eventually([&] { return off_goal() < 0.05; });
+  const double off = off_goal();
   if (off < 0.05)
     return "";
   return "execute: " + execute.response.message + " (" + std::to_string(off) + " rad from the goal)";
@@ -293,24 +300,26 @@ TcpDrag dragTcp(const std::string& hand_id)
     pose.pose.position = tf2::toMsg(at);
     pose_pub.publish(pose);
   };
-  for (int i = 0; i < 300 && (grip_pub.getNumSubscribers() == 0 || pose_pub.getNumSubscribers() == 0); ++i)
+  for (int i = 0; i < 1000 && (grip_pub.getNumSubscribers() == 0 || pose_pub.getNumSubscribers() == 0); ++i)
     send(start), ros::WallDuration(0.01).sleep();  // the node finds hands once a second
   for (int i = 0; i < 20; ++i)
     send(start), ros::WallDuration(0.01).sleep();
   std_msgs::Float64 grip;
   grip.data = 1.0;
   grip_pub.publish(grip);
-  for (int i = 0; i < 100 && out.grabbed.empty(); ++i, ros::WallDuration(0.01).sleep())
+  eventually([&] {
     for (const auto& e : events.all())
       if (e.kind == "grab")
         out.grabbed = e.detail.substr(e.detail.find("grabbed ") + 8, e.detail.find(" at ") - e.detail.find("grabbed ") - 8);
+    return !out.grabbed.empty();
+  });
   const std::size_t before = robot.size();
-  ros::WallTime tick = ros::WallTime::now();
-  for (int i = 1; i <= 250; ++i)  // 2 s moving, then half a second at the end
+  ros::Time tick = ros::Time::now();
+  for (int i = 1; i <= 250; ++i)  // 2 s moving, then half a second at the end (simulated time: the same drag however slow)
   {
     send(start + Eigen::Vector3d(0.1 * std::min(1.0, i / 200.0), 0, 0));
-    tick += ros::WallDuration(0.01);
-    if (const ros::WallDuration rest = tick - ros::WallTime::now(); rest > ros::WallDuration(0))
+    tick += ros::Duration(0.01);
+    if (const ros::Duration rest = tick - ros::Time::now(); rest > ros::Duration(0))
       rest.sleep();
   }
   const Eigen::Vector3d moved = tcpAt() - start;

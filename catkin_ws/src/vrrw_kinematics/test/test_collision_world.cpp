@@ -35,8 +35,9 @@ TEST(CollisionWorld, SeparatedAndTouchingBall)
   ASSERT_TRUE(contact.collision);
   EXPECT_TRUE((contact.body_a == "ball" && contact.body_b == "shoulder_link") ||
               (contact.body_b == "ball" && contact.body_a == "shoulder_link"));
-  EXPECT_LE(world.distance(zero, "ball").distance, 0.0);
-  EXPECT_GT(world.distance(zero).distance, -1e9);
+  // overlapping shapes: FCL's distance query answers -1, not a depth (the ball is 3.75 cm into the shoulder)
+  EXPECT_EQ(world.distance(zero, "ball").distance, -1.0);
+  EXPECT_EQ(world.distance(zero).distance, -1.0);
   EXPECT_THROW(world.distance(zero, "nothing"), KinematicsError);
   EXPECT_LE(world.distance(zero, "ur5e").distance, 0.0);  // the URDF's robot name owns every link
 }

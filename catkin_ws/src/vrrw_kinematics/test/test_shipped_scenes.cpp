@@ -68,7 +68,7 @@ TEST(ShippedScenes, IkRoundTripsOnEveryArm)
     EXPECT_EQ(solver.hasAnalytic(), robot.model != "fetch") << robot.name;
     std::mt19937_64 rng(17);
     IkOptions options;
-    options.timeout = 0.02;
+    options.timeout = 0.5;  // a budget, not the verdict: the search returns at its first solution
     int success = 0;
     const int samples = 300;
     for (int s = 0; s < samples; ++s)

@@ -263,8 +263,10 @@ TEST(Grasping, Ur5eWith2F85LiftsAndCarriesACubeByFriction)
             << " mm of the TCP, slipped " << r.max_slip << " mm\n";
   EXPECT_NEAR(r.lifted, 0.2, 0.005);
   EXPECT_NEAR(r.carried, 0.3, 0.005);
-  EXPECT_LT(r.max_offset, 5.0);
-  EXPECT_LT(r.max_slip, 5.0);
+  // the README's target is 5 mm; deterministic: centre 0.216 mm from the TCP, 0.346 mm slip measured (0.114 mm,
+  // 0.170 mm before issue 22's solver order)
+  EXPECT_LT(r.max_offset, 0.35);
+  EXPECT_LT(r.max_slip, 0.5);
 }
 
 TEST(Grasping, Ur5eWith2F85LiftsAndCarriesTheDrillByItsBody)
@@ -289,8 +291,47 @@ TEST(Grasping, Ur5eWith2F85LiftsAndCarriesTheDrillByItsBody)
   EXPECT_NEAR(r.lifted, 0.2, 0.005);
   EXPECT_NEAR(r.carried, 0.3, 0.005);
   // The TCP is the pad centre of the closed gripper; on the 64 mm housing the pads sit lower along
-  // the tool axis, so the grasp point is judged by how far it slips in the TCP frame.
-  EXPECT_LT(r.max_slip, 5.0);
+  // the tool axis, so the grasp point is judged by how far it slips in the TCP frame: 0.276 mm measured
+  // (target 5 mm).
+  EXPECT_LT(r.max_slip, 0.8);
+}
+
+TEST(Grasping, Ur5eWith2F85HoldsTheDrillAtSixPlacements)
+{
+  // The drill moved on the table (x, y in m, yaw in rad about its own z), each taken the same way from above and
+  // carried 0.3 m towards -y: the grip must not depend on one lucky placement.
+  const std::vector<Eigen::Vector3d> placements = { { 0.0, 0.0, 0.0 },    { 0.05, 0.0, 0.0 },  { -0.05, 0.0, 0.0 },
+                                                    { 0.0, 0.05, 0.3 },   { 0.0, -0.05, -0.3 }, { 0.03, 0.03, 0.5 } };
+  double worst = 0.0;
+  for (const Eigen::Vector3d& p : placements)
+  {
+    vrrw_scene::Scene cell = scene("pick_place_drill");
+    for (vrrw_scene::Object& o : cell.objects)
+      if (o.name == "drill")
+      {
+        o.pose.translation() += Eigen::Vector3d(p.x(), p.y(), 0.0);
+        o.pose.linear() = Eigen::AngleAxisd(p.z(), Eigen::Vector3d::UnitZ()) * o.pose.linear();
+      }
+    PhysicsWorld world(cell);
+    for (int i = 0; i < 200; ++i)
+      world.step();
+    const Eigen::Matrix3d drill = world.objectPose("drill").rotation();
+    Eigen::Matrix3d down;
+    down.col(2) = Eigen::Vector3d(0, 0, -1);
+    down.col(1) = drill.col(1);
+    down.col(0) = down.col(1).cross(down.col(2));
+    const GraspResult r = pickAndCarry(world, cell, "ur5e", "drill", Eigen::Vector3d(0.03, 0.0, 0.203), down,
+                                       Eigen::Vector3d(0, -0.3, 0), 0.8);
+    std::cout << "drill at +" << p.x() << " m x, +" << p.y() << " m y, " << p.z() << " rad: lifted " << r.lifted
+              << " m, carried " << r.carried << " m, slipped " << r.max_slip << " mm\n";
+    EXPECT_NEAR(r.lifted, 0.2, 0.005) << p.transpose();
+    EXPECT_NEAR(r.carried, 0.3, 0.005) << p.transpose();
+    worst = std::max(worst, r.max_slip);
+  }
+  std::cout << "six placements: largest slip " << worst << " mm\n";
+  // deterministic: 0.12-1.14 mm measured with the joint rows after the contacts (issue 22), 0.27-0.57 mm before
+  // (target 5 mm)
+  EXPECT_LT(worst, 2.0);
 }
 
 TEST(Grasping, Ur10eWith2F140LiftsAndCarriesThe10cmCube)
@@ -312,7 +353,7 @@ TEST(Grasping, Ur10eWith2F140LiftsAndCarriesThe10cmCube)
             << " m, centre within " << r.max_offset << " mm of the TCP, slipped " << r.max_slip << " mm\n";
   EXPECT_NEAR(r.lifted, 0.2, 0.005);
   EXPECT_NEAR(r.carried, 0.3, 0.005);
-  EXPECT_LT(r.max_slip, 5.0);
+  EXPECT_LT(r.max_slip, 0.008);  // deterministic: 0.0024 mm measured (0.41 mm before issue 22's solver order; target 5 mm)
 }
 
 namespace

@@ -23,6 +23,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include <algorithm>
+#include <iostream>
 #include <limits>
 
 namespace
@@ -31,6 +32,7 @@ struct Listener
 {
   sensor_msgs::JointState last;
   int count = 0;
+  ros::Time newest;  ///< the latest stamp of any /ur5e/joint_states received
   std::vector<std::string> errors;
 
   Listener()
@@ -39,6 +41,7 @@ struct Listener
     states = nh.subscribe<sensor_msgs::JointState>("/ur5e/joint_states", 10, [this](const sensor_msgs::JointStateConstPtr& m) {
       last = *m;
       ++count;
+      newest = std::max(newest, m->header.stamp);
     });
     all = nh.subscribe<sensor_msgs::JointState>("/joint_states", 10, [this](const sensor_msgs::JointStateConstPtr& m) { all_last = *m; });
     error_sub = nh.subscribe<std_msgs::String>("/physics/errors", 10, [this](const std_msgs::StringConstPtr& m) { errors.push_back(m->data); });
@@ -175,11 +178,11 @@ TEST(PhysicsNode, PauseUnpauseAndStep)
   const auto at = step(0.0);
   ASSERT_TRUE(at.success) << at.message;
   EXPECT_EQ(at.steps, 0u);
-  l.waitFor([] { return false; }, 0.3);
+  // nothing moved while paused: whatever arrives now (however late) is stamped at or before the pause
+  l.waitFor([] { return false; }, 0.6);
   const int paused_at = l.count;
-  l.waitFor([] { return false; }, 0.3);
-  EXPECT_EQ(l.count, paused_at);
-  EXPECT_EQ(step(0.0).time, at.time);  // nothing moved while paused
+  EXPECT_LE(l.newest, at.time);
+  EXPECT_EQ(step(0.0).time, at.time);
   const auto stepped = step(0.1);
   ASSERT_TRUE(stepped.success) << stepped.message;
   EXPECT_EQ(stepped.steps, 100u);
@@ -190,7 +193,7 @@ TEST(PhysicsNode, PauseUnpauseAndStep)
   EXPECT_EQ(step(1e9).message, "duration: 1000000000.000000 outside [0, 600] s");
   ASSERT_TRUE(empty("/physics/unpause"));
   ASSERT_TRUE(empty("/physics/unpause"));  // without pause: answered, still running
-  EXPECT_TRUE(l.waitFor([&] { return l.count > paused_at + 10; }, 5.0));
+  EXPECT_TRUE(l.waitFor([&] { return l.count > paused_at + 10; }, 20.0));
 }
 
 TEST(PhysicsNode, StampedInputTakesEffectAtItsStamp)
@@ -208,7 +211,9 @@ TEST(PhysicsNode, StampedInputTakesEffectAtItsStamp)
   hand.pose.orientation.w = 1.0;
   hand.radius = 0.05;
   hands.publish(hand);
-  l.waitFor([] { return false; }, 0.5);  // it arrives while the simulation waits
+  // it arrives while the simulation waits (nothing tells when a topic message has arrived: a delivery of a few
+  // tenths of a second is all this assumes; a hand later than 1.05 s of the step would be removed later)
+  l.waitFor([] { return false; }, 1.0);
   ASSERT_TRUE(step(1.45).success);
   l.waitFor([] { return false; }, 0.3);
   EXPECT_FALSE(l.errorMentions("hand 'stamped': no pose for"));
@@ -237,7 +242,7 @@ TEST(PhysicsNode, CompliantArmFollowsAnOperatorSpring)
   spring.request.max_force = 20.0;
   ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_spring", spring) && spring.response.success) << spring.response.message;
   const double pan = l.position("ur5e_shoulder_pan_joint");
-  EXPECT_TRUE(l.waitFor([&] { return std::abs(l.position("ur5e_shoulder_pan_joint") - pan) > 0.05; }, 5.0));
+  EXPECT_TRUE(l.waitFor([&] { return std::abs(l.position("ur5e_shoulder_pan_joint") - pan) > 0.05; }, 20.0));
   vrrw_physics::SpringTarget target;
   target.id = "nobody";
   target.target.orientation.w = 1.0;
@@ -275,7 +280,7 @@ TEST(PhysicsNode, PublishesContactsAndTakesNamedHands)
         return c.normal_force;
     return 0.0;
   };
-  EXPECT_TRUE(l.waitFor([&] { return std::abs(drillOnTable() - 1.5 * 9.81) < 1.5; }, 5.0)) << drillOnTable() << " N";
+  EXPECT_TRUE(l.waitFor([&] { return std::abs(drillOnTable() - 1.5 * 9.81) < 1.5; }, 20.0)) << drillOnTable() << " N";
   vrrw_physics::Hand hand;
   hand.id = "left";
   hand.pose.position.z = 2.0;  // in free space, above everything
@@ -285,7 +290,7 @@ TEST(PhysicsNode, PublishesContactsAndTakesNamedHands)
   EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("hand 'left' radius: 1 outside [0, 0.25] m"); }, 5.0));
   hand.radius = 0.05;
   hands.publish(hand);  // accepted; it falls silent and goes after 0.5 s
-  EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("hand 'left': no pose for"); }, 5.0));
+  EXPECT_TRUE(l.waitFor([&] { return l.errorMentions("hand 'left': no pose for"); }, 20.0));
 }
 
 TEST(PhysicsNode, WildInputIsRefusedAndRepeatedErrorsAreRateLimited)
@@ -315,22 +320,26 @@ TEST(PhysicsNode, WildInputIsRefusedAndRepeatedErrorsAreRateLimited)
   pose.request.pose.position.x = 0.0;
   ASSERT_TRUE(vrrw_common::services().tryCall("/physics/set_object_pose", pose));
   EXPECT_NE(pose.response.message.find("fixed"), std::string::npos) << pose.response.message;
-  // 300 bad hands in 0.3 s: one error line, then at most one a second that counts the rest.
+  // 300 bad hands in 0.3 s (longer on a loaded machine): one error line, then at most one a second (of wall
+  // time: the throttle serves a person reading the errors) that counts the rest.
   vrrw_physics::Hand bad;
   bad.id = "huge";
   bad.pose.orientation.w = 1.0;
   bad.radius = 3.0;
   ros::spinOnce();
   const int before = l.errorsMentioning("hand 'huge' radius");
+  const ros::WallTime start = ros::WallTime::now();
   for (int i = 0; i < 300; ++i)
   {
     hands.publish(bad);
     ros::WallDuration(0.001).sleep();
   }
   l.waitFor([] { return false; }, 1.5);
+  const double seconds = (ros::WallTime::now() - start).toSec();
   const int lines = l.errorsMentioning("hand 'huge' radius") - before;
+  std::cout << "300 bad hands: " << lines << " error lines in " << seconds << " s\n";
   EXPECT_GE(lines, 1);
-  EXPECT_LE(lines, 3);
+  EXPECT_LE(lines, 2 + int(seconds));  // the first, then one per second begun
 }
 
 TEST(PhysicsNode, PublishesSimulatedTimeOnClock)

@@ -99,7 +99,7 @@ TEST(RobotDrives, LeavingCompliantModeHoldsThePoseTheArmIsIn)
   run(world, 5.0, [&] { drift = std::max(drift, (world.framePose("ur5e_tcp").translation() - pushed).norm()); });
   std::cout << "pushed " << (pushed - start).norm() << " m away, set rigid: TCP drift " << drift << " m over 5 s\n";
   EXPECT_GT((pushed - start).norm(), 0.03);  // the targets of the start would pull it back this far
-  EXPECT_LT(drift, 1e-3);
+  EXPECT_LT(drift, 1.5e-6);  // deterministic: 5.2e-7 m measured (the README's target: < 1 mm)
 }
 
 TEST(RobotDrives, TargetsThatStopArrivingHoldTheLastTargetAtRest)
@@ -123,7 +123,7 @@ TEST(RobotDrives, TargetsThatStopArrivingHoldTheLastTargetAtRest)
   std::cout << "targets stopped at " << target << " rad: the arm went on to " << farthest << " rad and rests at "
             << held << " rad; with no timeout it coasts to " << coasted << " rad\n";
   EXPECT_LT(farthest - target, 0.1 * 0.25 + 2e-3);  // 0.1 s more on the stale velocity at most
-  EXPECT_LT(std::abs(held - target), 3e-3);
+  EXPECT_LT(std::abs(held - target), 1.5e-3);  // 6.6e-4 rad measured
   EXPECT_GT(coasted - same_target, 0.1);  // what the timeout prevents
 }
 
@@ -157,7 +157,7 @@ TEST(RobotDrives, EffortInTargetsBoundsTheSqueezeOfAFingerDrive)
   {
     const double force = squeeze(fetch, "fetch", "fetch_l_gripper_finger_joint", 0.0, effort).force;
     std::cout << "fetch fingers, effort " << effort << " N: squeeze " << force << " N\n";
-    EXPECT_NEAR(force, 2.0 * effort, 0.05 * 2.0 * effort);
+    EXPECT_NEAR(force, 2.0 * effort, 1e-3 * 2.0 * effort);  // 20.0 N and 60.0 N measured
   }
   EXPECT_GT(squeeze(fetch, "fetch", "fetch_l_gripper_finger_joint", 0.0, 0.0).force, 100.0);  // the URDF's 60 N each
   // Robotiq 2F-85: finger_joint is the knuckle's angle, and its five mimic joints each have a follower drive that
@@ -170,7 +170,8 @@ TEST(RobotDrives, EffortInTargetsBoundsTheSqueezeOfAFingerDrive)
     const double bound = 12.0 * effort / padGapRate(lever, s.position);
     std::cout << "2F-85 finger_joint effort " << effort << " N m: squeeze " << s.force << " N (virtual work: " << bound
               << " N)\n";
-    EXPECT_LT(s.force, 1.05 * bound);
-    EXPECT_GT(s.force, 0.8 * bound);
+    // 0.940 and 0.952 of virtual work measured (0.25 and 0.5 N m) with the joint rows after the contacts (issue
+    // 22); 1.004 and 1.020 before
+    EXPECT_NEAR(s.force / bound, 0.946, 0.02);
   }
 }

@@ -97,8 +97,9 @@ TEST_P(DriveStep, UnderdampedStepMatchesSecondOrderResponse)
   const double k = 100.0, d = 0.2 * 2.0 * std::sqrt(k * kInertia);  // zeta = 0.2
   const Response r = stepResponse(k, d, step, 3.0, GetParam());
   EXPECT_GT(r.overshoot_ref, 0.5 * step);
-  EXPECT_LT(r.max_error, 0.02 * step);
-  EXPECT_NEAR(r.overshoot_sim, r.overshoot_ref, 0.02 * step);
+  // deterministic: 1.26 % of the step and overshoot 0.2575 vs 0.2633 rad measured (README: within 2 %)
+  EXPECT_LT(r.max_error, 0.013 * step);
+  EXPECT_NEAR(r.overshoot_sim, r.overshoot_ref, 0.007);
   // The 2 % settling time jumps by half a period when a peak grazes the band; implicit Euler's
   // numerical damping (h*wn^2/2 = 0.1/s against zeta*wn = 2.8/s) moves it by one peak here.
   EXPECT_NEAR(r.settle_sim, r.settle_ref, 0.15 * r.settle_ref);
@@ -110,9 +111,11 @@ TEST_P(DriveStep, RigidGainsStableAndMatchOverdampedResponse)
 {
   const double step = 0.5;
   const Response r = stepResponse(1e5, 8e4, step, 4.0, GetParam());
-  EXPECT_LT(r.max_error, 0.02 * step);
+  // deterministic: 0.023 % of the step and settling 3.131 s vs 3.129 s measured, both schemes (the README's
+  // target is 2 %; these bounds catch a regression well below it)
+  EXPECT_LT(r.max_error, 0.0003 * step);
   EXPECT_LT(r.overshoot_sim, 1e-6);
-  EXPECT_NEAR(r.settle_sim, r.settle_ref, 0.02 * r.settle_ref);
+  EXPECT_NEAR(r.settle_sim, r.settle_ref, 0.002 * r.settle_ref);
   std::cout << "rigid: max error " << r.max_error / step * 100 << " % of step, settling " << r.settle_sim << " s vs "
             << r.settle_ref << " s\n";
 }

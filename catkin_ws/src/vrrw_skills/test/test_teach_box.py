@@ -19,6 +19,22 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # catkin runs nose with -P: no test folder on the path
 from teaching import VRRW, HERE, run, segment_errors, stop, teach
 
+
+def arm_goal_active(seconds):
+    """Waits (wall clock, a bound against a hang only) until the UR5e's controller reports an active goal."""
+    import rospy
+    from actionlib_msgs.msg import GoalStatus, GoalStatusArray
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        try:
+            status = rospy.wait_for_message('/ur5e/arm_controller/follow_joint_trajectory/status', GoalStatusArray,
+                                            timeout=5.0)
+        except rospy.ROSException:
+            continue
+        if any(s.status == GoalStatus.ACTIVE for s in status.status_list):
+            return True
+    return False
+
 SCENE = os.path.join(HERE, 'data', 'box_cell.yaml')
 GRASP = (0.0, 0.0, 0.03)  # the teacher's grasp in the box's frame: 3 cm above its centre, from above
 
@@ -86,9 +102,10 @@ class TeachBox(unittest.TestCase):
         self.assertEqual(missing.returncode, 2, missing.stderr)
         self.assertEqual(missing.stderr.strip(), 'skill run: --object crate: not in tf (is it an object of the running '
                                                  'scene?)')
-        moving = subprocess.Popen([VRRW, 'send', 'ur5e', '--joints', '0,-1.2,1.2,-1.57,-1.57,0', '--duration', '6'],
+        moving = subprocess.Popen([VRRW, 'send', 'ur5e', '--joints', '0,-1.2,1.2,-1.57,-1.57,0', '--duration', '10'],
                                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        time.sleep(2.5)
+        # the goal is running (however long the tool took to start); 10 s of motion outlast skill run's start
+        self.assertTrue(arm_goal_active(60.0), 'the send goal never became active')
         busy = run(['skill', 'run', self.skill], 60)
         moving.wait(timeout=60)
         self.assertEqual(busy.returncode, 2, busy.stderr)
