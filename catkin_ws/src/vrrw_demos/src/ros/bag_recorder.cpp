@@ -1,5 +1,6 @@
 #include "bag_recorder.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -48,6 +49,14 @@ std::optional<std::set<std::string>> topicsPublishedTo(const std::string& node, 
       topics.insert(static_cast<std::string>(c[4]));
   }
   return topics;
+}
+
+/// rosbag refuses a message at time 0, and simulated time is 0 until physics has taken its first step (a
+/// workspace that starts paused, or a recording started the moment it is up): such a message is written at
+/// ros::TIME_MIN (1 ns), which keeps the order of everything received.
+ros::Time bagTime(const ros::Time& time)
+{
+  return std::max(time, ros::TIME_MIN);
 }
 }  // namespace
 
@@ -126,7 +135,7 @@ void BagRecorder::start(const std::string& file, std::vector<std::string> robots
   {
     std_msgs::String metadata;
     metadata.data = metadata_yaml;
-    bag_->write("/demos/metadata", ros::Time::now(), metadata);
+    bag_->write("/demos/metadata", bagTime(ros::Time::now()), metadata);
     ++written_;
   }
   catch (const rosbag::BagException& e)
@@ -215,7 +224,8 @@ void BagRecorder::onMessage(const std::string& topic, const ros::MessageEvent<to
   std::lock_guard<std::mutex> lock(mutex_);
   if (!recording_ || stopping_)
     return;
-  queue_.push_back({ topic, event.getReceiptTime(), event.getConstMessage(), event.getConnectionHeaderPtr() });
+  queue_.push_back(
+      { topic, bagTime(event.getReceiptTime()), event.getConstMessage(), event.getConnectionHeaderPtr() });
   wake_.notify_one();
 }
 
