@@ -33,8 +33,10 @@ struct DmpParameters
   double degenerate_ratio = 0.05;  ///< |g - x0| below this fraction of the demo's range counts as g == x0
   /// rad (m): with automatic scaling, a joint the demonstration moves less than this is scaled by its range
   /// too: its drift is not a motion to stretch to a new goal (a 3 mrad drift to a goal 80 mrad away would
-  /// be mirrored and amplified 25 times). 0: off.
-  double still_range = 0.0;
+  /// be mirrored and amplified 25 times). 0: off. 20 mrad, as vrrw_skills learns with: a joint held while the
+  /// others move ripples by a few mrad in physics (drives, a held load), and the demo's `final` turns wrist_2 by
+  /// 0.4 mrad, which the README's example goal mirrored 3.7 times.
+  double still_range = 0.02;
   /// the local quadratic fit uses at least 2m+1 samples, and as many as half the basis spacing holds
   std::size_t derivative_half_window = 3;
 
