@@ -293,6 +293,13 @@ TEST(InteractionFake, FreeDriveFollowsAHandAndStopsWhereItIs)
   EXPECT_TRUE(eventually([&] { return cell->hasEvent("release"); }));
   ASSERT_TRUE(call<std_srvs::SetBool>("/ur5e/free_drive").response.success);
   EXPECT_TRUE(eventually([&] { return !cell->active.last().data; }));
+  // the arm ends its last steps toward the hand's last pose (within 5 mm of it above, not yet at rest); from
+  // then on, free-drive off, it must stay
+  EXPECT_TRUE(eventually([&] {
+    const Eigen::VectorXd before = arm6(cell->robot.last());
+    ros::WallDuration(0.05).sleep();
+    return (arm6(cell->robot.last()) - before).cwiseAbs().maxCoeff() < 1e-9;
+  }));
   const Eigen::VectorXd held = arm6(cell->robot.last());
   ros::WallDuration(1.0).sleep();
   EXPECT_LT((arm6(cell->robot.last()) - held).cwiseAbs().maxCoeff(), 1e-9);
