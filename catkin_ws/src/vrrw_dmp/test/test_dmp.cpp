@@ -278,6 +278,8 @@ TEST(Dmp, AJointThatHardlyMovesIsNotStretchedToANewGoalWithAStillRange)
   };
   DmpParameters automatic;
   automatic.scaling = AmplitudeScaling::automatic;
+  EXPECT_EQ(automatic.still_range, 0.02);  // on by default (20 mrad); off here to show what it prevents
+  automatic.still_range = 0.0;
   const Dmp stretched = Dmp::learn(demo, automatic);
   EXPECT_EQ(stretched.jointScaling()[2], AmplitudeScaling::goal_offset);
   automatic.still_range = 0.01;
