@@ -1,8 +1,6 @@
 // Node test (rostest, real master): ./vrrw plan (vrrw_plan) summarises a plan and keeps it as a CSV that
 // ./vrrw send (vrrw_arm) executes.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <regex>
@@ -10,6 +8,7 @@
 #include <ros/topic.h>
 #include <sensor_msgs/JointState.h>
 #include <vrrw_common/joint_mapping.h>
+#include <vrrw_common/run_program.h>
 #include <vrrw_trajectory/csv.h>
 
 namespace
@@ -20,33 +19,13 @@ struct ToolRun
   std::string output;  ///< stdout and stderr
 };
 
-/// Runs \a argv (no shell) and collects its output.
-ToolRun run(std::vector<std::string> argv)
+/// Runs \a argv (no shell, vrrw_common::runProgram) and collects its output.
+ToolRun run(const std::vector<std::string>& argv)
 {
-  int ends[2];
-  EXPECT_EQ(::pipe(ends), 0);
-  const pid_t child = ::fork();
-  if (child == 0)
-  {
-    ::dup2(ends[1], 1);
-    ::dup2(ends[1], 2);
-    ::close(ends[0]);
-    std::vector<char*> words;
-    for (auto& word : argv)
-      words.push_back(word.data());
-    words.push_back(nullptr);
-    ::execv(words[0], words.data());
-    ::_exit(127);
-  }
-  ::close(ends[1]);
+  std::string out, errors;
   ToolRun result;
-  char buffer[512];
-  for (ssize_t n; (n = ::read(ends[0], buffer, sizeof buffer)) > 0;)
-    result.output.append(buffer, static_cast<std::size_t>(n));
-  ::close(ends[0]);
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.status = vrrw_common::runProgram(argv, { nullptr, &out, &errors, false });
+  result.output = out + errors;
   return result;
 }
 
