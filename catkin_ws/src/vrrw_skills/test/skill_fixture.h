@@ -153,10 +153,7 @@ public:
   }
   CartesianPose tcp(const std::vector<double>& joints) override { return poseOf(joints); }
 };
-}  // namespace vrrw_skills_test
 
-namespace vrrw_skills_test
-{
 /// A robot whose joints are its TCP's x, y and z (a URDF of three prismatic joints), for demonstrations built
 /// in code that the learner reads as it reads a bag's.
 inline const char* kXyzRobot = R"(<robot name="xyz">
