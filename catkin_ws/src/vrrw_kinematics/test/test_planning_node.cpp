@@ -4,6 +4,7 @@
 #include <ros/ros.h>
 #include <vrrw_common/ros/persistent_service.h>
 #include <vrrw_msgs/AttachObject.h>
+#include <vrrw_msgs/CheckPath.h>
 #include <vrrw_msgs/CheckState.h>
 #include <vrrw_msgs/ComputeFK.h>
 #include <vrrw_msgs/ComputeIK.h>
@@ -97,6 +98,74 @@ TEST(PlanningNode, CheckStateNamesTheCollidingPair)
   EXPECT_FALSE(limits.response.within_limits);
   EXPECT_EQ(limits.response.error_code, 6);
   EXPECT_NE(limits.response.message.find("ur5e_elbow_joint"), std::string::npos);
+}
+
+/// A path of the arm's joints with one point per given state.
+vrrw_msgs::CheckPath pathOf(const std::vector<std::vector<double>>& states)
+{
+  vrrw_msgs::CheckPath path;
+  path.request.path.joint_names = kArm;
+  for (const auto& q : states)
+  {
+    path.request.path.points.emplace_back();
+    path.request.path.points.back().positions = q;
+  }
+  return path;
+}
+
+TEST(PlanningNode, CheckPathAnswersEveryPointAsCheckStateWould)
+{
+  // free, through the table, outside the elbow's limits, free again: every point answered in order
+  const std::vector<std::vector<double>> states = { { 0.0, -1.57, 1.57, -1.57, -1.57, 0.0 },
+                                                    { 0.0, 1.2, 0.0, 0.0, 0.0, 0.0 },
+                                                    { 0.0, -1.57, 4.0, -1.57, -1.57, 0.0 },
+                                                    { 0.3, -1.57, 1.57, -1.57, -1.57, 0.0 } };
+  const vrrw_msgs::CheckPath path = call("/ur5e/check_path", pathOf(states));
+  ASSERT_EQ(path.response.error_code, 0) << path.response.message;
+  ASSERT_EQ(path.response.link_a.size(), 4u);
+  ASSERT_EQ(path.response.link_b.size(), 4u);
+  ASSERT_EQ(path.response.limit_violation.size(), 4u);
+  for (std::size_t k = 0; k < states.size(); ++k)
+  {
+    vrrw_msgs::CheckState one;
+    one.request.joint_state = arm(states[k]);
+    one = call("/ur5e/check_state", one);
+    EXPECT_EQ(path.response.link_a[k], one.response.link_a) << "point " << k;
+    EXPECT_EQ(path.response.link_b[k], one.response.link_b) << "point " << k;
+    EXPECT_EQ(path.response.limit_violation[k].empty(), one.response.within_limits) << "point " << k;
+  }
+  EXPECT_EQ(path.response.link_a[0], "");
+  EXPECT_NE(path.response.link_a[1] + path.response.link_b[1], "");
+  EXPECT_NE(path.response.limit_violation[2].find("ur5e_elbow_joint"), std::string::npos)
+      << path.response.limit_violation[2];
+  EXPECT_EQ(path.response.link_a[3], "");
+}
+
+TEST(PlanningNode, CheckPathRefusesABadPointOrAPathBeyondItsBoundWhole)
+{
+  vrrw_msgs::CheckPath nan = pathOf({ { 0.0, -1.57, 1.57, -1.57, -1.57, 0.0 },
+                                      { 0.0, -1.57, std::nan(""), -1.57, -1.57, 0.0 } });
+  nan = call("/ur5e/check_path", nan);
+  EXPECT_EQ(nan.response.error_code, 9);
+  EXPECT_EQ(nan.response.message, "check_path: path.points[1]: joint ur5e_elbow_joint: not finite");
+  EXPECT_TRUE(nan.response.link_a.empty());
+
+  vrrw_msgs::CheckPath short_point = pathOf({ { 0.0, -1.57, 1.57 } });
+  short_point = call("/ur5e/check_path", short_point);
+  EXPECT_EQ(short_point.response.error_code, 9);
+  EXPECT_EQ(short_point.response.message, "check_path: path.points[0]: 6 names but 3 positions");
+
+  const std::size_t too_many = vrrw_msgs::CheckPath::Request::MAX_POINTS + 1;
+  vrrw_msgs::CheckPath long_path =
+      pathOf(std::vector<std::vector<double>>(too_many, { 0.0, -1.57, 1.57, -1.57, -1.57, 0.0 }));
+  long_path = call("/ur5e/check_path", long_path);
+  EXPECT_EQ(long_path.response.error_code, 9);
+  EXPECT_EQ(long_path.response.message, "check_path: path.points: 20001 points; at most 20000 per call");
+  EXPECT_TRUE(long_path.response.link_a.empty());
+
+  vrrw_msgs::CheckPath empty = call("/ur5e/check_path", vrrw_msgs::CheckPath());
+  EXPECT_EQ(empty.response.error_code, 0);
+  EXPECT_TRUE(empty.response.link_a.empty());
 }
 
 TEST(PlanningNode, PlansATimedTrajectory)

@@ -41,7 +41,7 @@ double millisecondsSince(Clock::time_point start)
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-/// The planner's arm on vrrw_kinematics directly: what the planning node answers compute_ik, check_state and
+/// The planner's arm on vrrw_kinematics directly: what the planning node answers compute_ik, check_path and
 /// compute_fk with, without the service round trips.
 class LibraryArm : public vrrw_skills::ArmKinematics
 {
@@ -64,10 +64,16 @@ public:
     return { std::vector<double>(result.q.data(), result.q.data() + result.q.size()), "" };
   }
 
-  vrrw_skills::ContactPair check(const std::vector<double>& joints) override
+  std::vector<vrrw_skills::ContactPair> checkPath(const std::vector<std::vector<double>>& path) override
   {
-    const auto contact = arm_.check(vector(joints), state_);
-    return contact.collision ? vrrw_skills::ContactPair{ contact.body_a, contact.body_b } : vrrw_skills::ContactPair{};
+    std::vector<vrrw_skills::ContactPair> pairs;
+    for (const auto& joints : path)
+    {
+      const auto contact = arm_.check(vector(joints), state_);
+      pairs.push_back(contact.collision ? vrrw_skills::ContactPair{ contact.body_a, contact.body_b }
+                                        : vrrw_skills::ContactPair{});
+    }
+    return pairs;
   }
 
   CartesianPose tcp(const std::vector<double>& joints) override

@@ -145,7 +145,7 @@ void SkillPlanner::solveGoals(const SkillScene& scene, const CartesianPose& obje
       throw SkillRefusal(name + ": no IK for its goal: " + answer.reason);
     if (touches_object)
     {
-      const ContactPair pair = arm_.check(*answer.joints);
+      const ContactPair pair = arm_.checkPath({ *answer.joints }).front();
       if (pair.touching() && pair.a != skill_.object && pair.b != skill_.object)
         throw SkillRefusal(name + ": no IK for its goal: collision (" + pair.a + " - " + pair.b + ")");
     }
@@ -221,16 +221,24 @@ void SkillPlanner::checkPiece(const std::string& instruction, const vrrw_traject
 {
   const std::vector<double>& start = motion.points.front().positions;
   const std::vector<double>& goal = motion.points.back().positions;
-  std::vector<double> checked;
+  // The states kCheckStep apart (and the last), checked in one call
+  std::vector<std::size_t> sampled;
+  std::vector<std::vector<double>> states;
   for (std::size_t k = 0; k < motion.points.size(); ++k)
   {
     const auto& q = motion.points[k].positions;
-    if (!checked.empty() && k + 1 < motion.points.size() && largestDifference(q, checked) < kCheckStep)
+    if (!states.empty() && k + 1 < motion.points.size() && largestDifference(q, states.back()) < kCheckStep)
       continue;
-    checked = q;
-    const ContactPair pair = arm_.check(q);
+    sampled.push_back(k);
+    states.push_back(q);
+  }
+  const std::vector<ContactPair> pairs = arm_.checkPath(states);
+  for (std::size_t i = 0; i < sampled.size(); ++i)
+  {
+    const ContactPair& pair = pairs.at(i);
     if (!pair.touching())
       continue;
+    const auto& q = states[i];
     const bool object = pair.a == skill_.object || pair.b == skill_.object;
     const std::string& other = pair.a == skill_.object ? pair.b : pair.a;
     if (object && instruction == "pick" && isFingerLink(other) && largestDifference(q, goal) < kGraspZone)
@@ -240,7 +248,7 @@ void SkillPlanner::checkPiece(const std::string& instruction, const vrrw_traject
     if (object && instruction == "final" && largestDifference(q, goal) < kSupportZone)
       continue;
     throw SkillRefusal(instruction + ": collision on the way: " + pair.a + " would touch " + pair.b + " at " +
-                       seconds(motion.points[k].time));
+                       seconds(motion.points[sampled[i]].time));
   }
 }
 

@@ -129,7 +129,7 @@ inline vrrw_skills::Skill pickAndPlace()
   return skill;
 }
 
-/// The toy arm: IK is exact inside a reach of \a reach m from the origin, refused beyond; check() asks \a touches.
+/// The toy arm: IK is exact inside a reach of \a reach m from the origin, refused beyond; checkPath() asks \a touches per state.
 class ToyArm : public vrrw_skills::ArmKinematics
 {
 public:
@@ -137,7 +137,7 @@ public:
   std::function<vrrw_skills::ContactPair(const std::vector<double>&)> touches = [](const std::vector<double>&) {
     return vrrw_skills::ContactPair{};
   };
-  int ik_calls = 0, checks = 0;
+  int ik_calls = 0, checks = 0, path_checks = 0;
 
   vrrw_skills::IkAnswer ik(const CartesianPose& tcp, const std::vector<double>&, bool) override
   {
@@ -146,10 +146,16 @@ public:
       return { std::nullopt, "out of reach (" + std::to_string(tcp.position.norm()) + " m)" };
     return { jointsOf(tcp), "" };
   }
-  vrrw_skills::ContactPair check(const std::vector<double>& joints) override
+  std::vector<vrrw_skills::ContactPair> checkPath(const std::vector<std::vector<double>>& path) override
   {
-    ++checks;
-    return touches(joints);
+    ++path_checks;
+    std::vector<vrrw_skills::ContactPair> pairs;
+    for (const auto& joints : path)
+    {
+      ++checks;
+      pairs.push_back(touches(joints));
+    }
+    return pairs;
   }
   CartesianPose tcp(const std::vector<double>& joints) override { return poseOf(joints); }
 };

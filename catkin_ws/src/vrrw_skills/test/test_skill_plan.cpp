@@ -167,6 +167,37 @@ TEST(SkillPlan, CollisionsAreRefusedExceptTheFingersAtTheGraspAndTheObjectOnItsS
   EXPECT_EQ(carried.rfind("final: collision on the way: box would touch bin at ", 0), 0u) << carried;
 }
 
+TEST(SkillPlan, APieceIsCheckedInOneCallEveryCheckStep)
+{
+  const auto skill = vrrw_skills_test::pickAndPlace();
+  vrrw_skills_test::ToyArm arm;
+  SkillPlanner planner(skill, arm);
+  std::vector<std::vector<double>> checked;
+  arm.touches = [&checked](const std::vector<double>& q) {
+    checked.push_back(q);
+    return ContactPair{};
+  };
+  const auto steps = planner.approach(sceneWith(skill, skill.object_start));
+  // one call per goal that may touch the object (pick, back_to_near_pick, final: all solved before anything
+  // moves) and one per arm piece: not one per state
+  std::size_t pieces = 0;
+  for (const auto& step : steps)
+    pieces += step.trajectory.points.empty() ? 0 : 1;
+  EXPECT_EQ(static_cast<std::size_t>(arm.path_checks), pieces + 3);
+  EXPECT_GT(checked.size(), 3 * pieces);
+  // consecutive checked states of a piece are at most a check step (and one sample) apart
+  double largest_gap = 0.0;
+  for (std::size_t k = 1; k < checked.size(); ++k)
+  {
+    double gap = 0.0;
+    for (std::size_t j = 0; j < checked[k].size(); ++j)
+      gap = std::max(gap, std::abs(checked[k][j] - checked[k - 1][j]));
+    if (gap < 0.1)  // within a piece (pieces start where the last one ended, the goal check is elsewhere)
+      largest_gap = std::max(largest_gap, gap);
+  }
+  EXPECT_LT(largest_gap, 2 * SkillPlanner::kCheckStep);
+}
+
 TEST(SkillPlan, AJointRolloutThatCollidesFollowsTheCartesianDmpInstead)
 {
   const auto skill = vrrw_skills_test::pickAndPlace();

@@ -42,6 +42,7 @@ RobotServices::RobotServices(ros::NodeHandle& nh, const vrrw_scene::Robot& robot
   servers_.push_back(nh.advertiseService(ns + "compute_fk", &RobotServices::computeFk, this));
   servers_.push_back(nh.advertiseService(ns + "compute_ik", &RobotServices::computeIk, this));
   servers_.push_back(nh.advertiseService(ns + "check_state", &RobotServices::checkState, this));
+  servers_.push_back(nh.advertiseService(ns + "check_path", &RobotServices::checkPath, this));
   servers_.push_back(nh.advertiseService(ns + "plan", &RobotServices::plan, this));
   servers_.push_back(nh.advertiseService(ns + "attach_object", &RobotServices::attachObject, this));
 }
@@ -142,6 +143,57 @@ bool RobotServices::checkState(vrrw_msgs::CheckState::Request& req, vrrw_msgs::C
   }
   catch (const KinematicsError& e)
   {
+    return reply(res, e);
+  }
+}
+
+bool RobotServices::checkPath(vrrw_msgs::CheckPath::Request& req, vrrw_msgs::CheckPath::Response& res)
+{
+  try
+  {
+    const auto& points = req.path.points;
+    if (points.size() > vrrw_msgs::CheckPath::Request::MAX_POINTS)
+      throw KinematicsError(ErrorCode::InvalidArgument,
+                            "check_path: path.points: " + std::to_string(points.size()) + " points; at most " +
+                                std::to_string(vrrw_msgs::CheckPath::Request::MAX_POINTS) + " per call");
+    // Every point is validated before any is checked: a bad one refuses the whole path, with its index.
+    sensor_msgs::JointState point_state;
+    point_state.name = req.path.joint_names;
+    std::vector<Eigen::VectorXd> states;
+    states.reserve(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+      point_state.position = points[k].positions;
+      try
+      {
+        states.push_back(context_.overlay(point_state));
+      }
+      catch (const KinematicsError& e)
+      {
+        std::string reason = e.what();
+        if (reason.rfind("joint_state: ", 0) == 0)
+          reason.erase(0, 13);
+        throw KinematicsError(e.code(), "check_path: path.points[" + std::to_string(k) + "]: " + reason);
+      }
+    }
+    // Objects are read from tf once: the path is checked against the scene as it is at the call.
+    context_.refreshObjects();
+    for (const Eigen::VectorXd& state : states)
+    {
+      res.limit_violation.push_back(arm_.bounds().violation(arm_.jointValues(state)));
+      const Contact contact = context_.world().check(state, arm_.robot().name);
+      res.link_a.push_back(contact.collision ? contact.body_a : "");
+      res.link_b.push_back(contact.collision ? contact.body_b : "");
+    }
+    res.error_code = 0;
+    res.message = staleWarning(point_state);
+    return true;
+  }
+  catch (const KinematicsError& e)
+  {
+    res.limit_violation.clear();
+    res.link_a.clear();
+    res.link_b.clear();
     return reply(res, e);
   }
 }

@@ -2,6 +2,7 @@
 #include <ros/ros.h>
 #include <vrrw_kinematics/arm.h>
 #include <vrrw_msgs/AttachObject.h>
+#include <vrrw_msgs/CheckPath.h>
 #include <vrrw_msgs/CheckState.h>
 #include <vrrw_msgs/ComputeFK.h>
 #include <vrrw_msgs/ComputeIK.h>
@@ -11,7 +12,7 @@
 
 namespace vrrw_kinematics
 {
-/// \brief compute_fk, compute_ik, check_state, plan and attach_object for one robot, under /<robot>/.
+/// \brief compute_fk, compute_ik, check_state, check_path, plan and attach_object for one robot, under /<robot>/.
 class RobotServices
 {
 public:
@@ -22,6 +23,7 @@ private:
   bool computeFk(vrrw_msgs::ComputeFK::Request& req, vrrw_msgs::ComputeFK::Response& res);
   bool computeIk(vrrw_msgs::ComputeIK::Request& req, vrrw_msgs::ComputeIK::Response& res);
   bool checkState(vrrw_msgs::CheckState::Request& req, vrrw_msgs::CheckState::Response& res);
+  bool checkPath(vrrw_msgs::CheckPath::Request& req, vrrw_msgs::CheckPath::Response& res);
   bool plan(vrrw_msgs::Plan::Request& req, vrrw_msgs::Plan::Response& res);
   bool attachObject(vrrw_msgs::AttachObject::Request& req, vrrw_msgs::AttachObject::Response& res);
 

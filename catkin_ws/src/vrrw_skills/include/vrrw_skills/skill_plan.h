@@ -23,10 +23,10 @@ struct IkAnswer
   std::string reason;
 };
 
-/// \brief What planning a run needs of the arm that runs it: IK of its TCP, a collision check of a state
-/// against the scene as it is (other robots, objects; a held object attached), and forward kinematics. On a
-/// running workspace the planning node's services (compute_ik, check_state, compute_fk); in a benchmark
-/// vrrw_kinematics itself.
+/// \brief What planning a run needs of the arm that runs it: IK of its TCP, a collision check of states along a
+/// path against the scene as it is (other robots, objects; a held object attached), and forward kinematics. On a
+/// running workspace the planning node's services (compute_ik, check_path, compute_fk: one round trip per
+/// piece's check, not per state); in a benchmark vrrw_kinematics itself.
 class ArmKinematics
 {
 public:
@@ -34,8 +34,9 @@ public:
   /// \brief The joints nearest \a seed that put the TCP at \a tcp (world); with \a avoid_collisions only a
   /// state touching nothing.
   virtual IkAnswer ik(const CartesianPose& tcp, const std::vector<double>& seed, bool avoid_collisions) = 0;
-  /// \brief The first pair the arm at \a joints touches (none: not touching()).
-  virtual ContactPair check(const std::vector<double>& joints) = 0;
+  /// \brief Per state of \a path (the arm's joints), the first pair the arm touches there (none: not
+  /// touching(); outside the joint limits: "joint limits" and the violation).
+  virtual std::vector<ContactPair> checkPath(const std::vector<std::vector<double>>& path) = 0;
   /// \brief The TCP (world) at \a joints.
   virtual CartesianPose tcp(const std::vector<double>& joints) = 0;
 };

@@ -1,7 +1,7 @@
 #include <vrrw_skills/ros/arm_services.h>
 
 #include <vrrw_msgs/AttachObject.h>
-#include <vrrw_msgs/CheckState.h>
+#include <vrrw_msgs/CheckPath.h>
 #include <vrrw_msgs/ComputeFK.h>
 #include <vrrw_msgs/ComputeIK.h>
 #include <vrrw_skills/skill_error.h>
@@ -67,17 +67,31 @@ IkAnswer ArmServices::ik(const CartesianPose& tcp, const std::vector<double>& se
   return answer;
 }
 
-ContactPair ArmServices::check(const std::vector<double>& joints)
+std::vector<ContactPair> ArmServices::checkPath(const std::vector<std::vector<double>>& path)
 {
-  vrrw_msgs::CheckState srv;
-  srv.request.joint_state.name = arm_joints_;
-  srv.request.joint_state.position = joints;
-  services_.call("/" + robot_ + "/check_state", srv);
-  if (!srv.response.within_limits)
-    return { "joint limits", srv.response.message };
-  if (!srv.response.in_collision)
-    return {};
-  return { srv.response.link_a, srv.response.link_b };
+  std::vector<ContactPair> pairs;
+  const std::size_t chunk = vrrw_msgs::CheckPath::Request::MAX_POINTS;
+  for (std::size_t first = 0; first < path.size(); first += chunk)
+  {
+    vrrw_msgs::CheckPath srv;
+    srv.request.path.joint_names = arm_joints_;
+    for (std::size_t k = first; k < path.size() && k < first + chunk; ++k)
+    {
+      srv.request.path.points.emplace_back();
+      srv.request.path.points.back().positions = path[k];
+    }
+    services_.call("/" + robot_ + "/check_path", srv);
+    const std::size_t n = srv.request.path.points.size();
+    if (srv.response.error_code != 0 || srv.response.link_a.size() != n || srv.response.link_b.size() != n ||
+        srv.response.limit_violation.size() != n)
+      throw SkillRefusal("/" + robot_ + "/check_path: " + srv.response.message);
+    for (std::size_t k = 0; k < n; ++k)
+      if (!srv.response.limit_violation[k].empty())
+        pairs.push_back({ "joint limits", srv.response.limit_violation[k] });
+      else
+        pairs.push_back({ srv.response.link_a[k], srv.response.link_b[k] });
+  }
+  return pairs;
 }
 
 CartesianPose ArmServices::tcp(const std::vector<double>& joints)

@@ -110,7 +110,7 @@ void waitForWorkspace(const WorkspaceProcess& workspace, const std::string& robo
   };
   waitUntil([] { return ros::master::check(); });
   waitUntil([&robot] { return ros::param::has("/scene/robots/" + robot + "/arm_joints"); });
-  for (const std::string& service : std::vector<std::string>{ "/" + robot + "/compute_ik", "/" + robot + "/check_state",
+  for (const std::string& service : std::vector<std::string>{ "/" + robot + "/compute_ik", "/" + robot + "/check_path",
                                       "/" + robot + "/attach_object", "/physics/set_object_pose" })
     waitUntil([&service] { return ros::service::exists(service, false); });
 }

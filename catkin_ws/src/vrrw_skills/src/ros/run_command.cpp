@@ -47,7 +47,7 @@ int runCommand(int argc, char** argv)
   vrrw_common::checkWorkspace({ robot,
                                 { ns + "arm_controller/follow_joint_trajectory",
                                   ns + "gripper_controller/gripper_cmd" },
-                                { ns + "compute_ik", ns + "check_state", ns + "compute_fk", ns + "attach_object" } });
+                                { ns + "compute_ik", ns + "check_path", ns + "compute_fk", ns + "attach_object" } });
   std::signal(SIGINT, interruptArm);
   std::signal(SIGTERM, interruptArm);
   ros::NodeHandle node;

@@ -1,5 +1,5 @@
 #pragma once
-// The planning node's services for one arm, as the planner's ArmKinematics: compute_ik, check_state,
+// The planning node's services for one arm, as the planner's ArmKinematics: compute_ik, check_path,
 // compute_fk and attach_object, each over a persistent connection.
 #include <string>
 #include <vector>
@@ -15,7 +15,7 @@ public:
   ArmServices(vrrw_common::PersistentServices& services, std::string robot, std::vector<std::string> arm_joints);
 
   IkAnswer ik(const CartesianPose& tcp, const std::vector<double>& seed, bool avoid_collisions) override;
-  ContactPair check(const std::vector<double>& joints) override;
+  std::vector<ContactPair> checkPath(const std::vector<std::vector<double>>& path) override;
   CartesianPose tcp(const std::vector<double>& joints) override;
   /// \brief Fixes \a object to the TCP in the planning scene (it moves with the arm and may touch the gripper),
   /// or frees it where it is. Throws SkillRefusal with the node's message.
