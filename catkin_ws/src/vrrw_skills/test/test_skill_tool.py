@@ -1,7 +1,11 @@
 #!/usr/bin/python3
 """`./vrrw skill` refusing bad input as a user meets it, without a workspace: each is one line naming the file,
-field or option and the reason, exit 2 (exit 1 for no workspace), nothing written, nothing started. About 20 seconds."""
+field or option and the reason, exit 2 (exit 1 for no workspace), nothing written, nothing started. And an
+evaluate killed mid-run (SIGKILL: no clean-up of its own) leaves none of its workspace's processes running.
+About 40 seconds."""
 import os
+import re
+import signal
 import shutil
 import socket
 import subprocess
@@ -95,6 +99,39 @@ class SkillToolBadInput(unittest.TestCase):
     def test_run_without_a_workspace_says_so_quickly(self):
         seconds = self.refuse(['run', self.skill], 'no workspace at ', exit_code=1)
         self.assertLess(seconds, 10.0)  # the check itself answers within 2 s; the tool's start is the rest
+
+
+class KilledEvaluation(unittest.TestCase):
+    def test_an_evaluate_killed_mid_run_takes_its_workspace_with_it(self):
+        folder = tempfile.mkdtemp(prefix='vrrw_skill_killed_')
+        out = os.path.join(folder, 'evaluation')
+        skill = os.path.join(HERE, 'data', 'box_skill.yaml')
+        evaluate = subprocess.Popen([VRRW, 'skill', 'evaluate', skill, '--scene', BOX_CELL, '--trials', '3',
+                                     '--out', out], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        try:
+            for line in evaluate.stdout:  # the workspace is up and the first trial runs
+                if 'trial 1/3' in line:
+                    break
+            with open(os.path.join(out, 'workspace.log')) as log:
+                pids = [int(p) for p in re.findall(r'started with pid \[(\d+)\]', log.read())]
+            self.assertGreaterEqual(len(pids), 6)  # master, rosout and the workspace's nodes
+            self.assertTrue(all(alive(pid) for pid in pids))
+        finally:
+            evaluate.send_signal(signal.SIGKILL)
+            evaluate.wait()
+        deadline = time.monotonic() + 15.0  # the watchdog's SIGTERM, then SIGKILL 5 s after
+        while any(alive(pid) for pid in pids) and time.monotonic() < deadline:
+            time.sleep(0.2)
+        self.assertEqual([pid for pid in pids if alive(pid)], [])
+        shutil.rmtree(folder)
+
+
+def alive(pid):
+    try:
+        with open(f'/proc/{pid}/stat') as stat:
+            return stat.read().split(') ')[1][0] != 'Z'
+    except (FileNotFoundError, IndexError):
+        return False
 
 
 if __name__ == '__main__':

@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <netinet/in.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -68,10 +69,16 @@ WorkspaceProcess::WorkspaceProcess(const std::string& scene, const std::string& 
   const int log = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (log < 0)
     throw SkillRefusal(log_file + ": cannot be written");
+  const pid_t evaluate = ::getpid();
   pid_ = ::fork();
   if (pid_ == 0)
   {
     ::setpgid(0, 0);
+    // If evaluate dies without its destructor (a crash, SIGKILL), the launcher is ended with it, and its
+    // watchdog ends the workspace's nodes (a crashed evaluate once left a whole workspace running).
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != evaluate)
+      ::_exit(1);
     ::dup2(log, STDOUT_FILENO);
     ::dup2(log, STDERR_FILENO);
     const char* argv[] = { vrrw.c_str(), "up", scene.c_str(), "--mode", "physics", "--rtf", rtf.c_str(), nullptr };
