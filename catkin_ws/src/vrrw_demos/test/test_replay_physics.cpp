@@ -1,14 +1,12 @@
 // A pick-and-place in physics, demonstrated through the controllers while the recorder runs, then
 // replayed from the reset scene with `vrrw demos replay --mode physics`: the joint error against the
-// de-jittered path and where the block ends, against where the demonstration left it.
+// de-jittered path and where the block ends, against where the demonstration left it. Replayed twice, in
+// lockstep at rtf max (the tool's default): both replays' joint states are bit-identical (issue 20).
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
+#include <map>
 #include <mutex>
-#include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <actionlib/client/simple_action_client.h>
 #include <control_msgs/FollowJointTrajectoryAction.h>
@@ -22,6 +20,7 @@
 #include <sensor_msgs/JointState.h>
 #include <tf2_msgs/TFMessage.h>
 #include <vrrw_common/joint_mapping.h>
+#include <vrrw_common/run_program.h>
 #include <vrrw_msgs/DemoStart.h>
 #include <vrrw_msgs/DemoStop.h>
 
@@ -62,6 +61,39 @@ private:
   ros::Subscriber sub_;
   std::mutex mutex_;
   Eigen::Isometry3d pose_ = Eigen::Isometry3d::Identity();
+};
+
+/// The arm's joint states as published, by stamp; since() gives those after the last time the simulation
+/// was reset (its clock went back).
+class JointStateLog
+{
+public:
+  explicit JointStateLog(ros::NodeHandle& nh) : sub_(nh.subscribe("/ur5e/joint_states", 100000, &JointStateLog::onState, this))
+  {
+  }
+  /// \brief The states since the last reset, and forgets them.
+  std::map<ros::Time, std::vector<double>> takeSinceReset()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::map<ros::Time, std::vector<double>> taken;
+    taken.swap(since_reset_);
+    return taken;
+  }
+
+private:
+  void onState(const sensor_msgs::JointState& msg)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!since_reset_.empty() && msg.header.stamp < since_reset_.rbegin()->first)
+      since_reset_.clear();  // the clock went back: a reset
+    std::vector<double> values = msg.position;
+    values.insert(values.end(), msg.velocity.begin(), msg.velocity.end());
+    values.insert(values.end(), msg.effort.begin(), msg.effort.end());
+    since_reset_[msg.header.stamp] = values;
+  }
+  std::mutex mutex_;
+  std::map<ros::Time, std::vector<double>> since_reset_;  ///< PROTECTED BY mutex_
+  ros::Subscriber sub_;  ///< last: destroyed first
 };
 
 Eigen::Isometry3d lastBlockPoseIn(const std::string& path)
@@ -112,16 +144,13 @@ control_msgs::FollowJointTrajectoryGoal carry(const sensor_msgs::JointState& now
   return goal;
 }
 
-int run(const std::string& command, std::string& output)
+/// The demos tool with \a arguments; its standard output and error in \a output.
+int runTool(const std::vector<std::string>& arguments, std::string& output)
 {
-  const std::string log = "/tmp/vrrw_replay_physics_" + std::to_string(::getpid()) + ".log";
-  const int status = std::system((command + " >" + log + " 2>&1").c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  output = text.str();
-  std::remove(log.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::vector<std::string> argv{ VRRW_TOOL };
+  argv.insert(argv.end(), arguments.begin(), arguments.end());
+  output.clear();
+  return vrrw_common::runProgram(argv, { nullptr, &output, &output, false });
 }
 
 double field(const std::string& output, const std::string& key)
@@ -135,6 +164,7 @@ TEST(ReplayPhysics, PickAndPlaceEndsWhereTheDemonstrationLeftTheBlock)
 {
   ros::NodeHandle nh;
   BlockPose block(nh);
+  JointStateLog states(nh);
   ArmClient arm("/ur5e/arm_controller/follow_joint_trajectory", true);
   GripperClient hand("/ur5e/gripper_controller/gripper_cmd", true);
   ASSERT_TRUE(arm.waitForServer(ros::Duration(30.0)));
@@ -167,19 +197,40 @@ TEST(ReplayPhysics, PickAndPlaceEndsWhereTheDemonstrationLeftTheBlock)
   ASSERT_GT(carried, 0.2) << "the demonstration did not carry the block";
 
   std::string output;
-  EXPECT_EQ(run(VRRW_TOOL " segment " + bag, output), 0) << output;
+  EXPECT_EQ(runTool({ "segment", bag }, output), 0) << output;
   std::cout << output;
   EXPECT_NE(output.find("close_gripper"), std::string::npos);
-  ASSERT_EQ(run(VRRW_TOOL " replay " + bag + " --mode physics", output), 0) << output;
-  std::cout << output;
-  EXPECT_LE(field(output, "rms_error"), 2e-3) << output;
-  ros::Duration(1.0).sleep();
-  const Eigen::Isometry3d replayed = block.latest();
-  const double distance = (replayed.translation() - demonstrated.translation()).norm();
-  const double angle = Eigen::AngleAxisd(replayed.linear() * demonstrated.linear().transpose()).angle();
-  std::cout << "replayed block vs demonstrated: " << distance * 1e3 << " mm, " << angle * 180 / M_PI << " deg\n";
-  EXPECT_LE(distance, 0.005);
-  EXPECT_LE(angle, 3.0 * M_PI / 180);
+  std::map<ros::Time, std::vector<double>> replays[2];
+  for (auto& replayed_states : replays)
+  {
+    ASSERT_EQ(runTool({ "replay", bag, "--mode", "physics" }, output), 0) << output;
+    std::cout << output;
+    EXPECT_LE(field(output, "rms_error"), 2e-3) << output;
+    ros::Duration(1.0).sleep();
+    const Eigen::Isometry3d replayed = block.latest();
+    const double distance = (replayed.translation() - demonstrated.translation()).norm();
+    const double angle = Eigen::AngleAxisd(replayed.linear() * demonstrated.linear().transpose()).angle();
+    std::cout << "replayed block vs demonstrated: " << distance * 1e3 << " mm, " << angle * 180 / M_PI << " deg\n";
+    EXPECT_LE(distance, 0.005);
+    EXPECT_LE(angle, 3.0 * M_PI / 180);
+    replayed_states = states.takeSinceReset();
+  }
+  // Determinism: the states both replays published at the same simulated instants are bit-identical, from
+  // the reset to the end of the shorter log (after the replay the simulation runs on, paced)
+  std::size_t common = 0, differing = 0;
+  for (const auto& [stamp, values] : replays[0])
+  {
+    const auto other = replays[1].find(stamp);
+    if (other == replays[1].end())
+      continue;
+    ++common;
+    differing += other->second != values;
+  }
+  const double replay_seconds = field(output, "duration");
+  std::cout << "two replays: " << replays[0].size() << " and " << replays[1].size() << " joint states since the reset, "
+            << common << " at the same instants, " << differing << " differ\n";
+  EXPECT_GT(common, static_cast<std::size_t>(0.9 * 500 * replay_seconds));  // published at 500 Hz
+  EXPECT_EQ(differing, 0u);
 }
 
 int main(int argc, char** argv)

@@ -47,29 +47,48 @@ DriveScheme parseDriveScheme(const std::string& text)
   throw std::invalid_argument("drive scheme '" + text + "': expected constraint or stable_pd");
 }
 
-PhysicsWorld::PhysicsWorld(const vrrw_scene::Scene& scene, const WorldOptions& options) : options_(options)
+PhysicsWorld::PhysicsWorld(const vrrw_scene::Scene& scene, const WorldOptions& options)
+  : options_(options), scene_(scene)
 {
   if (!(options_.dt > 0.0) || !std::isfinite(options_.dt))
     throw std::runtime_error("dt: must be a positive number of seconds");
   if (!(options_.target_timeout >= 0.0) || !(options_.hand_timeout >= 0.0))
     throw std::runtime_error("target_timeout, hand_timeout: must be >= 0 s (0: never)");
-  createBulletWorld();
-  operator_ = std::make_unique<OperatorInput>(*world_, time_, options_.dt, options_.hand_timeout);
-  addRobots(scene);
-  addObjects(scene);
-  if (options_.floor)
-    addFloor();
+  build();
   initial_ = snapshot();
   last_good_ = initial_;
 }
 
 PhysicsWorld::~PhysicsWorld()
 {
+  tearDown();
+}
+
+void PhysicsWorld::build()
+{
+  createBulletWorld();
+  operator_ = std::make_unique<OperatorInput>(*world_, time_, options_.dt, options_.hand_timeout);
+  addRobots(scene_);
+  addObjects(scene_);
+  if (options_.floor)
+    addFloor();
+}
+
+void PhysicsWorld::tearDown()
+{
   operator_.reset();
   if (floor_)
     world_->removeRigidBody(floor_.get());
   objects_.clear();
   robots_.clear();
+  floor_.reset();
+  floor_shape_.reset();
+  world_.reset();
+  solver_.reset();
+  broadphase_.reset();
+  self_collision_filter_.reset();
+  dispatcher_.reset();
+  collision_config_.reset();
 }
 
 void PhysicsWorld::createBulletWorld()

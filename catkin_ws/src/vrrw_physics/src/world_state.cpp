@@ -61,13 +61,14 @@ void PhysicsWorld::restoreMotion(const WorldState& s)
 
 void PhysicsWorld::reset()
 {
-  operator_->releaseAll();
-  for (RobotEntry& e : robots_)
-  {
-    e.drives->reset(options_.mode);
-    e.gravity_compensation = options_.gravity_compensation;
-  }
-  restore(initial_);
+  // A new Bullet world from the scene, not the old one's bodies put back: Bullet keeps more between steps than
+  // the bodies' states (the broadphase's tree and pair order, contact manifolds with their warm-start impulses,
+  // sleeping timers), and any of it left from before made the same inputs give other states after a reset
+  // (two replays of one demonstration differed from 0.1 s on).
+  tearDown();
+  time_ = 0.0;
+  steps_ = 0;
+  build();
   last_good_ = initial_;
   trips_in_a_row_ = 0;
   tripped_since_snapshot_ = false;

@@ -211,8 +211,13 @@ private:
   std::string insaneState() const;
   void recoverFrom(const std::string& why);
   void restoreMotion(const WorldState& state);
+  /// The Bullet world of the scene: robots at their initial state, objects, floor (construction and reset()).
+  void build();
+  /// Everything build() made, in the order Bullet needs.
+  void tearDown();
 
   WorldOptions options_;
+  vrrw_scene::Scene scene_;  ///< what build() builds
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config_;
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
   std::unique_ptr<btOverlapFilterCallback> self_collision_filter_;
