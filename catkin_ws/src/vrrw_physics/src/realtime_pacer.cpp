@@ -19,7 +19,7 @@ double RealtimePacer::wait(double sim_time, Clock::time_point now)
   const double ahead = (sim_time - started_at_) / rtf_ - std::chrono::duration<double>(now - start_).count();
   if (ahead < -max_lag_)
     restart(sim_time, now);
-  return ahead > 0.0 ? ahead : 0.0;
+  return ahead >= min_wait_ && ahead > 0.0 ? ahead : 0.0;
 }
 
 double parseRealTimeFactor(const std::string& text, const std::string& what)

@@ -30,6 +30,29 @@ TEST(RealtimePacer, RunsAtItsRealTimeFactorOrNeverWaitsAtMax)
   EXPECT_EQ(max.wait(100.0, t0), 0.0);
 }
 
+TEST(RealtimePacer, StepsInBurstsOfMinWaitThenWaitsOnce)
+{
+  using std::chrono::microseconds;
+  const RealtimePacer::Clock::time_point t0{};
+  RealtimePacer pacer(0.1, 1.0, 0.005);
+  pacer.restart(0.0, t0);
+  // 1 ms steps that take 0.1 ms each: no wait until the simulation leads by 5 ms, then one wait for all of it
+  int steps = 0;
+  double sim = 0.0, waited = 0.0;
+  auto now = t0;
+  for (; waited == 0.0; ++steps)
+  {
+    sim += 0.001;
+    now += microseconds(100);
+    waited = pacer.wait(sim, now);
+  }
+  EXPECT_EQ(steps, 6);
+  EXPECT_NEAR(waited, 0.006 - 0.0006, 1e-9);
+  // after the wait the simulation is where the wall clock is: the next 5 steps go on at once again
+  now += std::chrono::duration_cast<RealtimePacer::Clock::duration>(std::chrono::duration<double>(waited));
+  EXPECT_EQ(pacer.wait(sim + 0.001, now + microseconds(100)), 0.0);
+}
+
 TEST(RealtimePacer, RealTimeFactorsAreMaxOrPositiveNumbers)
 {
   EXPECT_TRUE(std::isinf(vrrw_physics::parseRealTimeFactor("max", "--rtf")));
