@@ -72,8 +72,8 @@ class Refusals(unittest.TestCase):
         self.refused("vrrw: up: --mode: 'phys' is not one of fake physics none", 'up', 'pick_place_drill',
                      '--mode', 'phys')
         self.refused('vrrw: up: missing SCENE', 'up', '--mode', 'fake')
-        self.refused("vrrw: up: 'x$(env HOME)': a name or path with $( cannot be passed to roslaunch", 'up',
-                     'x$(env HOME)')
+        self.refused('vrrw_scene: x$(env HOME): no such scene file or shipped scene (shipped: paper_multibot, '
+                     'pick_place_drill)', 'up', 'x$(env HOME)')
         self.refused('vrrw: test: --repeat: 0 is not a whole number >= 1', 'test', '--repeat', '0')
 
     def test_record_refuses_before_recording(self):
