@@ -103,6 +103,6 @@ TEST(DmpYaml, BadModelFilesNameTheField)
   EXPECT_EQ(errorOf(replaced(good, "    start: ", "    start: .nan #")),
             "model.yaml: model: demo start: value 1 is not finite");
   EXPECT_NE(errorOf("[1, 2").find("model.yaml:"), std::string::npos);
-  EXPECT_EQ(errorOf("- 1\n"), "model.yaml: model: expected a YAML mapping");
+  EXPECT_EQ(errorOf("- 1\n"), "model.yaml: model: expected a YAML mapping (an empty or cut-short file?)");
   EXPECT_THROW(vrrw_dmp::loadDmp("/nonexistent/model.yaml"), DmpError);
 }

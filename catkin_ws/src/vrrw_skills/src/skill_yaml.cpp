@@ -21,22 +21,16 @@ namespace
 /// A skill file bigger than this is refused before parsing (a skill of 6 instructions is about 60 KB).
 constexpr std::streamoff kMaxFileBytes = 16 * 1024 * 1024;
 
-void numbers(YAML::Emitter& out, const std::vector<double>& values)
-{
-  out << YAML::Flow << YAML::BeginSeq;
-  for (double v : values)
-    out << v;
-  out << YAML::EndSeq;
-}
+using vrrw_dmp::emitNumbers;
 
 void pose(YAML::Emitter& out, const std::string& key, const CartesianPose& value)
 {
   const Eigen::Quaterniond& q = value.orientation;
   out << YAML::Key << key << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "position" << YAML::Value;
-  numbers(out, { value.position.x(), value.position.y(), value.position.z() });
+  emitNumbers(out, { value.position.x(), value.position.y(), value.position.z() });
   out << YAML::Key << "orientation" << YAML::Value;
-  numbers(out, { q.x(), q.y(), q.z(), q.w() });
+  emitNumbers(out, { q.x(), q.y(), q.z(), q.w() });
   out << YAML::EndMap;
 }
 
@@ -46,9 +40,9 @@ void keyframe(YAML::Emitter& out, const std::string& key, const Keyframe& value)
   out << YAML::Key << "frame" << YAML::Value << toString(value.frame);
   const Eigen::Quaterniond& q = value.pose.orientation;
   out << YAML::Key << "position" << YAML::Value;
-  numbers(out, { value.pose.position.x(), value.pose.position.y(), value.pose.position.z() });
+  emitNumbers(out, { value.pose.position.x(), value.pose.position.y(), value.pose.position.z() });
   out << YAML::Key << "orientation" << YAML::Value;
-  numbers(out, { q.x(), q.y(), q.z(), q.w() });
+  emitNumbers(out, { q.x(), q.y(), q.z(), q.w() });
   out << YAML::EndMap;
 }
 
@@ -69,9 +63,9 @@ void instruction(YAML::Emitter& out, const SkillInstruction& value)
   keyframe(out, "start", value.start);
   keyframe(out, "end", value.end);
   out << YAML::Key << "joints_start" << YAML::Value;
-  numbers(out, value.joints_start);
+  emitNumbers(out, value.joints_start);
   out << YAML::Key << "joints_end" << YAML::Value;
-  numbers(out, value.joints_end);
+  emitNumbers(out, value.joints_end);
   out << YAML::Key << "fit" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "joint_rmse_rad" << YAML::Value << value.joint_fit_rmse;
   out << YAML::Key << "cartesian_rmse_m" << YAML::Value << value.cartesian_fit_rmse;
@@ -329,7 +323,7 @@ std::string toYaml(const Skill& skill)
   out << YAML::Key << "tcp_link" << YAML::Value << skill.tcp_link;
   out << YAML::Key << "gripper_joint" << YAML::Value << skill.gripper_joint;
   out << YAML::Key << "home" << YAML::Value;
-  numbers(out, skill.joints_home);
+  emitNumbers(out, skill.joints_home);
   out << YAML::EndMap;
   out << YAML::Key << "object" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "name" << YAML::Value << skill.object;
@@ -362,14 +356,12 @@ Skill fromYaml(const std::string& text, const std::string& source)
   YAML::Node root;
   try
   {
-    root = YAML::Load(text);
+    root = vrrw_dmp::loadYamlMapping(text, source, "skill");
   }
-  catch (const YAML::Exception& e)
+  catch (const vrrw_dmp::DmpError& e)
   {
-    throw SkillError(source + ":" + std::to_string(e.mark.line + 1) + ": not YAML (cut short?): " + e.msg);
+    throw SkillError(e.what());
   }
-  if (!root.IsMap())
-    read.fail("skill", "expected a YAML mapping (an empty or cut-short file?)");
   try
   {
     return parse(root, read);
