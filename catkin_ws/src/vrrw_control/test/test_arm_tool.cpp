@@ -15,22 +15,11 @@ using namespace vrrw_control_test;
 
 namespace
 {
-struct ToolRun
+/// Runs the tool with \a arguments as given (no shell); its status and output.
+vrrw_common::ProgramRun runTool(std::vector<std::string> arguments)
 {
-  int status = -1;
-  std::string output;  ///< stdout and stderr
-};
-
-/// Runs the tool with \a arguments as given (no shell: vrrw_common::runProgram); its status and output.
-ToolRun runTool(const std::vector<std::string>& arguments)
-{
-  std::vector<std::string> argv = { VRRW_ARM_TOOL };
-  argv.insert(argv.end(), arguments.begin(), arguments.end());
-  std::string out, errors;
-  ToolRun run;
-  run.status = vrrw_common::runProgram(argv, { nullptr, &out, &errors, false });
-  run.output = out + errors;
-  return run;
+  arguments.insert(arguments.begin(), VRRW_ARM_TOOL);
+  return vrrw_common::runCapturing(arguments);
 }
 
 /// The tool (or a stand-in) as a child process with its stdout and stderr on a pipe, argv passed as is.

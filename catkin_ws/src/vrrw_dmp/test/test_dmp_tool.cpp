@@ -19,22 +19,11 @@ namespace
 {
 namespace fs = std::filesystem;
 
-struct ToolRun
+/// Runs the tool with \a arguments as given (no shell); its status and output.
+vrrw_common::ProgramRun runTool(std::vector<std::string> arguments)
 {
-  int status = -1;
-  std::string output;  ///< stdout and stderr
-};
-
-/// Runs the tool with \a arguments as given (no shell: vrrw_common::runProgram); its status and output.
-ToolRun runTool(const std::vector<std::string>& arguments)
-{
-  std::vector<std::string> argv = { VRRW_DMP_TOOL };
-  argv.insert(argv.end(), arguments.begin(), arguments.end());
-  std::string out, errors;
-  ToolRun run;
-  run.status = vrrw_common::runProgram(argv, { nullptr, &out, &errors, false });
-  run.output = out + errors;
-  return run;
+  arguments.insert(arguments.begin(), VRRW_DMP_TOOL);
+  return vrrw_common::runCapturing(arguments);
 }
 
 std::string contentsOf(const fs::path& path)
@@ -72,14 +61,14 @@ protected:
 
 TEST_F(DmpTool, LearnsAndRollsOutWholeFiles)
 {
-  const ToolRun learned = runTool({ "learn", "--demo", path("demo.csv"), "--out", path("model.yaml") });
+  const auto learned = runTool({ "learn", "--demo", path("demo.csv"), "--out", path("model.yaml") });
   ASSERT_EQ(learned.status, 0) << learned.output;
-  const ToolRun rolled = runTool({ "rollout", "--model", path("model.yaml"), "--dt", "0.01", "--out", path("plan.csv") });
+  const auto rolled = runTool({ "rollout", "--model", path("model.yaml"), "--dt", "0.01", "--out", path("plan.csv") });
   ASSERT_EQ(rolled.status, 0) << rolled.output;
   const auto plan = vrrw_trajectory::readCsv(path("plan.csv"));
   EXPECT_GE(plan.points.size(), 201u);  // 2 s at 100 Hz, then settling
   EXPECT_NE(rolled.output.find("rolled out " + std::to_string(plan.points.size()) + " samples"), std::string::npos);
-  const ToolRun plotted =
+  const auto plotted =
       runTool({ "plot", "--demo", path("demo.csv"), "--rollout", path("plan.csv"), "--out", path("dmp.png") });
   ASSERT_EQ(plotted.status, 0) << plotted.output;
   EXPECT_EQ(contentsOf(folder_ / "dmp.png").substr(1, 3), "PNG");
@@ -92,7 +81,7 @@ TEST_F(DmpTool, RefusedRolloutsKeepTheOldFileAndLeaveNothingBeside)
   std::ofstream(path("plan.csv")) << "the previous plan\n";
   for (const auto& [option, value] : { std::pair{ "--tau", "1e6" }, std::pair{ "--dt", "1e-7" } })
   {
-    const ToolRun refused = runTool({ "rollout", "--model", path("model.yaml"), option, value, "--out", path("plan.csv") });
+    const auto refused = runTool({ "rollout", "--model", path("model.yaml"), option, value, "--out", path("plan.csv") });
     EXPECT_EQ(refused.status, 2) << option;
     EXPECT_NE(refused.output.find("more than the limit of 1000000: raise dt or shorten tau"), std::string::npos)
         << refused.output;
@@ -104,11 +93,11 @@ TEST_F(DmpTool, RefusedRolloutsKeepTheOldFileAndLeaveNothingBeside)
 
 TEST_F(DmpTool, RefusedLearningWritesNoModel)
 {
-  const ToolRun refused =
+  const auto refused =
       runTool({ "learn", "--demo", path("demo.csv"), "--basis", "1000000000", "--out", path("model.yaml") });
   EXPECT_EQ(refused.status, 2);
   EXPECT_EQ(refused.output, "vrrw dmp learn: basis count N = 1000000000: more than the limit of 10000\n");
-  const ToolRun unwritable = runTool({ "learn", "--demo", path("demo.csv"), "--out", path("missing/model.yaml") });
+  const auto unwritable = runTool({ "learn", "--demo", path("demo.csv"), "--out", path("missing/model.yaml") });
   EXPECT_EQ(unwritable.status, 2);
   EXPECT_NE(unwritable.output.find("missing/model.yaml: cannot open for writing"), std::string::npos)
       << unwritable.output;
@@ -118,11 +107,11 @@ TEST_F(DmpTool, RefusedLearningWritesNoModel)
 TEST_F(DmpTool, AFileItCannotUseIsBadInput)
 {
   std::ofstream(path("model.yaml")) << "format: [not, a, model\n";
-  const ToolRun model = runTool({ "rollout", "--model", path("model.yaml"), "--out", path("plan.csv") });
+  const auto model = runTool({ "rollout", "--model", path("model.yaml"), "--out", path("plan.csv") });
   EXPECT_EQ(model.status, 2);
   EXPECT_EQ(model.output.rfind("vrrw dmp rollout: " + path("model.yaml") + ":", 0), 0u) << model.output;
   EXPECT_EQ(std::count(model.output.begin(), model.output.end(), '\n'), 1) << model.output;
-  const ToolRun demo = runTool({ "learn", "--demo", path("missing.csv"), "--out", path("new.yaml") });
+  const auto demo = runTool({ "learn", "--demo", path("missing.csv"), "--out", path("new.yaml") });
   EXPECT_EQ(demo.status, 2);
   EXPECT_EQ(demo.output.rfind("vrrw dmp learn: " + path("missing.csv") + ":", 0), 0u) << demo.output;
   EXPECT_EQ(filesIn(folder_), (std::set<std::string>{ "demo.csv", "model.yaml" }));
