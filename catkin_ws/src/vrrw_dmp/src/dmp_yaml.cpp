@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <vrrw_dmp/dmp_error.h>
+#include <vrrw_dmp/yaml_fields.h>
 #include <vrrw_trajectory/trajectory_error.h>
 #include <vrrw_trajectory/whole_file.h>
 
@@ -18,57 +19,11 @@ namespace
 {
 const char* const kFormat = "vrrw_dmp/1";
 
-class Reader
+/// The model file's fields (its top level named "model" in errors).
+class Reader : public YamlFields
 {
 public:
-  explicit Reader(std::string source) : source_(std::move(source)) {}
-
-  YAML::Node child(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    const YAML::Node value = node[key];
-    if (!value)
-      fail(path + key, "missing");
-    return value;
-  }
-
-  template <typename T>
-  T scalar(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    const YAML::Node value = child(node, key, path);
-    try
-    {
-      return value.as<T>();
-    }
-    catch (const YAML::Exception&)
-    {
-      fail(path + key, "is not a " + std::string(std::is_same<T, std::string>::value ? "string" : "number"));
-    }
-  }
-
-  std::vector<double> numbers(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    const YAML::Node value = child(node, key, path);
-    if (!value.IsSequence())
-      fail(path + key, "is not a list of numbers");
-    try
-    {
-      return value.as<std::vector<double>>();
-    }
-    catch (const YAML::Exception&)
-    {
-      fail(path + key, "is not a list of numbers");
-    }
-  }
-
-  const std::string& source() const { return source_; }
-
-  [[noreturn]] void fail(const std::string& field, const std::string& reason) const
-  {
-    throw DmpError(source_ + ": " + field + ": " + reason);
-  }
-
-private:
-  std::string source_;
+  explicit Reader(std::string source) : YamlFields(std::move(source), "model") {}
 };
 }  // namespace
 

@@ -10,6 +10,7 @@
 
 #include <vrrw_dmp/dmp_error.h>
 #include <vrrw_dmp/dmp_yaml.h>
+#include <vrrw_dmp/yaml_fields.h>
 #include <vrrw_skills/skill_error.h>
 #include <vrrw_trajectory/trajectory_error.h>
 #include <vrrw_trajectory/whole_file.h>
@@ -97,79 +98,12 @@ void source(YAML::Emitter& out, const SkillSource& value)
   out << YAML::EndSeq << YAML::EndMap;
 }
 
-/// Reads fields with errors `SOURCE: path.to.field: reason`.
-class Reader
+/// A skill file's fields (vrrw_dmp::YamlFields, its top level named "skill"), its poses and keyframes; errors
+/// `SOURCE: path.to.field: reason` as DmpError, a SkillError at fromYaml.
+class Reader : public vrrw_dmp::YamlFields
 {
 public:
-  explicit Reader(std::string source) : source_(std::move(source)) {}
-
-  YAML::Node child(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    if (!node.IsMap())
-      fail(path.empty() ? "skill" : path.substr(0, path.size() - 1), "expected a mapping");
-    const YAML::Node value = node[key];
-    if (!value)
-      fail(path + key, "missing");
-    return value;
-  }
-
-  template <typename T>
-  T scalar(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    const YAML::Node value = child(node, key, path);
-    try
-    {
-      if (!value.IsScalar())
-        throw YAML::Exception(YAML::Mark::null_mark(), "");
-      const T read = value.as<T>();
-      if constexpr (std::is_floating_point<T>::value)
-        if (!std::isfinite(read))
-          fail(path + key, "is not a finite number");
-      return read;
-    }
-    catch (const YAML::Exception&)
-    {
-      fail(path + key, std::is_same<T, std::string>::value ? "is not a string" : "is not a number");
-    }
-  }
-
-  std::vector<double> numbers(const YAML::Node& node, const std::string& key, const std::string& path,
-                              std::size_t size = 0) const
-  {
-    const YAML::Node value = child(node, key, path);
-    std::vector<double> read;
-    try
-    {
-      if (!value.IsSequence())
-        throw YAML::Exception(YAML::Mark::null_mark(), "");
-      read = value.as<std::vector<double>>();
-    }
-    catch (const YAML::Exception&)
-    {
-      fail(path + key, "is not a list of numbers");
-    }
-    for (double v : read)
-      if (!std::isfinite(v))
-        fail(path + key, "holds a number that is not finite");
-    if (size > 0 && read.size() != size)
-      fail(path + key, std::to_string(read.size()) + " numbers, expected " + std::to_string(size));
-    return read;
-  }
-
-  std::vector<std::string> strings(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    const YAML::Node value = child(node, key, path);
-    try
-    {
-      if (!value.IsSequence())
-        throw YAML::Exception(YAML::Mark::null_mark(), "");
-      return value.as<std::vector<std::string>>();
-    }
-    catch (const YAML::Exception&)
-    {
-      fail(path + key, "is not a list of names");
-    }
-  }
+  explicit Reader(std::string source) : YamlFields(std::move(source), "skill") {}
 
   CartesianPose pose(const YAML::Node& node, const std::string& key, const std::string& path) const
   {
@@ -195,19 +129,9 @@ public:
   {
     const YAML::Node value = child(node, key, path);
     const std::string at = path + key + ".";
-    return { frameFromString(scalar<std::string>(value, "frame", at), source_ + ": " + at + "frame"),
+    return { frameFromString(scalar<std::string>(value, "frame", at), source() + ": " + at + "frame"),
              poseIn(value, at) };
   }
-
-  const std::string& source() const { return source_; }
-
-  [[noreturn]] void fail(const std::string& field, const std::string& reason) const
-  {
-    throw SkillError(source_ + ": " + field + ": " + reason);
-  }
-
-private:
-  std::string source_;
 };
 
 SkillInstruction readInstruction(const YAML::Node& node, const Reader& read, const std::string& at,
@@ -365,6 +289,10 @@ Skill fromYaml(const std::string& text, const std::string& source)
   try
   {
     return parse(root, read);
+  }
+  catch (const vrrw_dmp::DmpError& e)
+  {
+    throw SkillError(e.what());
   }
   catch (const YAML::Exception& e)
   {
