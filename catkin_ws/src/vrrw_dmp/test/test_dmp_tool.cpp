@@ -81,7 +81,8 @@ TEST_F(DmpTool, RefusedRolloutsKeepTheOldFileAndLeaveNothingBeside)
   std::ofstream(path("plan.csv")) << "the previous plan\n";
   for (const auto& [option, value] : { std::pair{ "--tau", "1e6" }, std::pair{ "--dt", "1e-7" } })
   {
-    const auto refused = runTool({ "rollout", "--model", path("model.yaml"), option, value, "--out", path("plan.csv") });
+    const auto refused =
+        runTool({ "rollout", "--model", path("model.yaml"), option, value, "--out", path("plan.csv") });
     EXPECT_EQ(refused.status, 2) << option;
     EXPECT_NE(refused.output.find("more than the limit of 1000000: raise dt or shorten tau"), std::string::npos)
         << refused.output;
