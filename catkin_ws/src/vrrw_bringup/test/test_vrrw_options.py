@@ -3,6 +3,8 @@ started, written or deleted; tools that need a workspace say so within seconds w
 import glob
 import os
 import re
+import shutil
+import signal
 import socket
 import subprocess
 import sys
@@ -72,8 +74,8 @@ class Refusals(unittest.TestCase):
         self.refused("vrrw: up: --mode: 'phys' is not one of fake physics none", 'up', 'pick_place_drill',
                      '--mode', 'phys')
         self.refused('vrrw: up: missing SCENE', 'up', '--mode', 'fake')
-        self.refused("vrrw: up: 'x$(env HOME)': a name or path with $( cannot be passed to roslaunch", 'up',
-                     'x$(env HOME)')
+        self.refused('vrrw_scene: x$(env HOME): no such scene file or shipped scene (shipped: paper_multibot, '
+                     'pick_place_drill)', 'up', 'x$(env HOME)')
         self.refused('vrrw: test: --repeat: 0 is not a whole number >= 1', 'test', '--repeat', '0')
 
     def test_record_refuses_before_recording(self):
@@ -152,6 +154,62 @@ class Documented(unittest.TestCase):
                 self.assertEqual(set(known.replace(',', ' ').split()), presets, path)
         self.assertIn('square_left', named)
         self.assertLessEqual(named - {'NAME'}, presets)
+
+
+class HostileScenePath(unittest.TestCase):
+    """record SCENE takes a scene path as a file path, whatever its characters: none becomes shell or launch text."""
+
+    def test_record_brings_up_a_scene_named_in_shell_and_launch_syntax(self):
+        folder = tempfile.mkdtemp(prefix='vrrw_hostile_')
+        cwd = os.path.join(folder, 'd $(touch PWNED) |&')
+        os.makedirs(cwd)
+        scene = "scene:=a';touch PWNED;'.yaml"  # relative: the word roslaunch would read as an argument
+        shutil.copy(os.path.join(ROOT, 'urdf', 'scenes', 'pick_place_drill.yaml'), os.path.join(cwd, scene))
+        bag = os.path.join(cwd, "rec';touch PWNED;'.bag")
+        ros_home = tempfile.mkdtemp(prefix='vrrw_hostile_home_')
+        self.addCleanup(shutil.rmtree, folder)
+        self.addCleanup(shutil.rmtree, ros_home)
+        env = dict(os.environ, ROS_MASTER_URI=f'http://localhost:{free_port()}', ROS_HOME=ros_home)
+        record = subprocess.Popen([VRRW, 'record', scene, '--out', bag], cwd=cwd, env=env, text=True,
+                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True)
+        output = []
+        try:
+            for line in record.stdout:  # up to the first progress line: the workspace came up and records
+                output.append(line)
+                if re.match(r'record: \d+ s, \d+ messages', line):
+                    os.killpg(record.pid, signal.SIGINT)  # Ctrl-C: stops the recording, then the scene
+                    break
+            rest = record.communicate(timeout=60)[0]
+        finally:
+            if record.poll() is None:
+                os.killpg(record.pid, signal.SIGKILL)
+                record.wait()
+        text = ''.join(output) + rest
+        self.assertEqual(record.returncode, 0, text)
+        stopped = re.search(r'^record: stopped: (\d+) messages in (.*)$', text, re.M)
+        self.assertIsNotNone(stopped, text)
+        print(stopped.group(0))
+        self.assertEqual(stopped.group(2), bag)
+        import rosbag
+        with rosbag.Bag(bag) as recorded:
+            topics = recorded.get_type_and_topic_info().topics
+            self.assertEqual(recorded.get_message_count(), int(stopped.group(1)))
+        self.assertGreater(int(stopped.group(1)), 0)
+        self.assertGreater(topics['/ur5e/joint_states'].message_count, 0)  # the scene's robot
+        pwned = glob.glob(os.path.join(folder, '**', 'PWNED'), recursive=True) + \
+            glob.glob(os.path.join(ros_home, '**', 'PWNED'), recursive=True) + \
+            [where for where in (os.getcwd(), ROOT, os.path.join(ROOT, 'build', 'ros_home'))
+             if os.path.exists(os.path.join(where, 'PWNED'))]
+        self.assertEqual(pwned, [])
+
+    def test_record_refuses_a_scene_argument_that_names_no_scene(self):
+        result = vrrw('record', 'scene:=pick_place_drill', '--out', os.path.join(tempfile.mkdtemp(), 'a.bag'))
+        self.assertEqual(result.returncode, 2, result.stderr)
+        line = ('vrrw_scene: scene:=pick_place_drill: no such scene file or shipped scene (shipped: paper_multibot, '
+                'pick_place_drill)\n')
+        self.assertTrue(result.stderr.endswith(line), result.stderr)  # after any build lines of ./vrrw's own
+        self.assertNotIn('bringing up', result.stdout)
+
 
 class WithoutWorkspace(unittest.TestCase):
     """No master at ROS_MASTER_URI: one line within the check's 2 s, exit 1 (roscpp would retry forever)."""

@@ -128,7 +128,7 @@ class Lifecycle(unittest.TestCase):
     def test_a_scene_beyond_any_cell_stops_before_any_node(self):
         result = subprocess.run([VRRW, 'up', os.path.join(ROOT, 'test', 'bad_input', 'far_base.yaml')],
                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
-        self.assertEqual(result.returncode, 1)
+        self.assertEqual(result.returncode, 2)  # bad input
         self.assertRegex(result.stderr, r'^vrrw_scene: .*far_base.yaml:6: robots\[0\]\.base\.xyz: 1e\+30 outside '
                                         r'\[-100, 100\] m \(a cell.s coordinates\)\n$')
 

@@ -133,4 +133,13 @@ int runProgram(const std::vector<std::string>& argv, std::string* output, bool q
   streams.quiet = quiet;
   return runProgram(argv, streams);
 }
+
+ProgramRun runCapturing(const std::vector<std::string>& argv)
+{
+  std::string errors;
+  ProgramRun run;
+  run.status = runProgram(argv, { nullptr, &run.output, &errors, false });
+  run.output += errors;
+  return run;
+}
 }  // namespace vrrw_common

@@ -37,6 +37,10 @@ TEST(RunProgram, ArgumentsAreNeverShellText)
   EXPECT_EQ(output, hostile);  // one argument, as given
   EXPECT_FALSE(exists(folder() + "/PWNED"));
   EXPECT_FALSE(exists(folder() + "/PWNED2"));
+  const auto run = vrrw_common::runCapturing(
+      { "/usr/bin/python3", "-c", "import sys; print('said'); sys.stderr.write('refused\\n'); sys.exit(2)" });
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(run.output, "said\nrefused\n");  // its output, then its errors
   EXPECT_EQ(runProgram({ "/nonexistent/program" }), -1);
   EXPECT_EQ(runProgram({ "false" }), 1);
   EXPECT_EQ(runProgram({}), -1);

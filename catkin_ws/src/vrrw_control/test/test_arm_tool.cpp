@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdio>
 #include <fstream>
+#include <vrrw_common/run_program.h>
 #include <vrrw_trajectory/csv.h>
 
 #include "ros_test_helpers.h"
@@ -14,22 +15,11 @@ using namespace vrrw_control_test;
 
 namespace
 {
-struct ToolRun
+/// Runs the tool with \a arguments as given (no shell); its status and output.
+vrrw_common::ProgramRun runTool(std::vector<std::string> arguments)
 {
-  int status = -1;
-  std::string output;  ///< stdout and stderr
-};
-
-ToolRun runTool(const std::string& arguments)
-{
-  ToolRun run;
-  FILE* pipe = ::popen((std::string(VRRW_ARM_TOOL) + " " + arguments + " 2>&1").c_str(), "r");
-  char buffer[512];
-  while (std::fgets(buffer, sizeof(buffer), pipe))
-    run.output += buffer;
-  const int status = ::pclose(pipe);
-  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
+  arguments.insert(arguments.begin(), VRRW_ARM_TOOL);
+  return vrrw_common::runCapturing(arguments);
 }
 
 /// The tool (or a stand-in) as a child process with its stdout and stderr on a pipe, argv passed as is.
@@ -155,7 +145,7 @@ TEST(ArmTool, SendsACsvAndReportsProgressAndTheResult)
   }
   const std::string path = ::testing::TempDir() + "vrrw_arm_tool.csv";
   vrrw_trajectory::writeCsv(path, csv);
-  const auto run = runTool("send ur5e --csv " + path);
+  const auto run = runTool({ "send", "ur5e", "--csv", path });
   std::remove(path.c_str());
   EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("sending 21 points over 1.5 s"), std::string::npos) << run.output;
@@ -172,10 +162,10 @@ TEST(ArmTool, SendsJointValuesAndTheGripper)
   auto target = arm();
   for (auto& q : target)
     q += 0.2;
-  const auto run = runTool("send ur5e --joints " + join(target));
+  const auto run = runTool({ "send", "ur5e", "--joints", join(target) });
   EXPECT_EQ(run.status, 0) << run.output;
   expectAt(target, 1e-6);  // to the printed digits
-  const auto grip = runTool("send ur5e --gripper 0.4");
+  const auto grip = runTool({ "send", "ur5e", "--gripper", "0.4" });
   EXPECT_EQ(grip.status, 0) << grip.output;
   EXPECT_NE(grip.output.find("result: SUCCEEDED"), std::string::npos) << grip.output;
 }
@@ -183,7 +173,7 @@ TEST(ArmTool, SendsJointValuesAndTheGripper)
 TEST(ArmTool, PlansAndMoves)
 {
   const std::vector<double> target = { 0.4, -1.3, 1.2, -1.5, -1.57, 0.2 };
-  const auto run = runTool("move ur5e --joints " + join(target) + " --seed 3");
+  const auto run = runTool({ "move", "ur5e", "--joints", join(target), "--seed", "3" });
   EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("planned in "), std::string::npos) << run.output;
   expectAt(target, 1e-6);
@@ -191,19 +181,19 @@ TEST(ArmTool, PlansAndMoves)
 
 TEST(ArmTool, BadInputIsOneLineNamingIt)
 {
-  auto run = runTool("send nosuchrobot --joints 0,0,0,0,0,0");
+  auto run = runTool({ "send", "nosuchrobot", "--joints", "0,0,0,0,0,0" });
   EXPECT_EQ(run.status, 1);
   EXPECT_EQ(run.output, "vrrw_arm: robot 'nosuchrobot' is not in the running workspace (its robots: ur5e)\n");
-  run = runTool("send ur5e --joints 0,0,0");
+  run = runTool({ "send", "ur5e", "--joints", "0,0,0" });
   EXPECT_EQ(run.status, 2);
   EXPECT_EQ(run.output, "vrrw_arm: --joints: 3 values, expected 6\n");
-  run = runTool("send ur5e --joints 0,0,nan,0,0,0");
+  run = runTool({ "send", "ur5e", "--joints", "0,0,nan,0,0,0" });
   EXPECT_EQ(run.output, "vrrw_arm: --joints value 3: 'nan' is not a finite number\n");
-  run = runTool("send ur5e --csv /nonexistent/demo.csv");
+  run = runTool({ "send", "ur5e", "--csv", "/nonexistent/demo.csv" });
   EXPECT_EQ(run.output, "vrrw_arm: /nonexistent/demo.csv:0: cannot open for reading\n");
-  run = runTool("move ur5e --pose 0,0,0,0,0,0");
+  run = runTool({ "move", "ur5e", "--pose", "0,0,0,0,0,0" });
   EXPECT_EQ(run.output, "vrrw_arm: --pose: 6 values, expected 7\n");
-  run = runTool("fly ur5e");
+  run = runTool({ "fly", "ur5e" });
   EXPECT_EQ(run.status, 2);
   EXPECT_EQ(run.output.rfind("vrrw_arm: unknown command 'fly'\nusage: vrrw_arm send ROBOT", 0), 0u) << run.output;
 }
@@ -258,34 +248,34 @@ TEST(ArmTool, AControllerGoneMidGoalIsNamed)
 
 TEST(ArmTool, AControllersRefusalIsPrintedWithItsReason)
 {
-  auto run = runTool("send ur5e --gripper 5");
+  auto run = runTool({ "send", "ur5e", "--gripper", "5" });
   EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.output.find("result: REJECTED: joint ur5e_finger_joint: position 5 outside limits [0, 0.8"),
             std::string::npos) << run.output;
-  run = runTool("send ur5e --gripper -1");
+  run = runTool({ "send", "ur5e", "--gripper", "-1" });
   EXPECT_NE(run.output.find("result: REJECTED: joint ur5e_finger_joint: position -1 outside limits"), std::string::npos)
       << run.output;
-  run = runTool("send ur5e --gripper 0.4 --effort 1e9");
+  run = runTool({ "send", "ur5e", "--gripper", "0.4", "--effort", "1e9" });
   EXPECT_NE(run.output.find("result: REJECTED: max_effort 1e+09 N exceeds the gripper's rated grip force"),
             std::string::npos) << run.output;
-  run = runTool("send ur5e --joints 9,0,0,0,0,0");
+  run = runTool({ "send", "ur5e", "--joints", "9,0,0,0,0,0" });
   EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.output.find("result: REJECTED (error_code -1 INVALID_GOAL): "), std::string::npos) << run.output;
 }
 
 TEST(ArmTool, OptionsAreRefusedNamingThem)
 {
-  auto run = runTool("send ur5e --joints 0,0,0,0,0,0 --duration 1e10");
+  auto run = runTool({ "send", "ur5e", "--joints", "0,0,0,0,0,0", "--duration", "1e10" });
   EXPECT_EQ(run.status, 2);
   EXPECT_EQ(run.output, "vrrw_arm: --duration: 1e10 outside [0, 86400] s\n");
-  run = runTool("move ur5e --joints 0,0,0,0,0,0 --seed -1");
+  run = runTool({ "move", "ur5e", "--joints", "0,0,0,0,0,0", "--seed", "-1" });
   EXPECT_EQ(run.status, 2);
   EXPECT_EQ(run.output, "vrrw_arm: --seed: -1 is not a whole number >= 0\n");
-  run = runTool("move ur5e --joints 0,0,0,0,0,0 --seed 1e30");
+  run = runTool({ "move", "ur5e", "--joints", "0,0,0,0,0,0", "--seed", "1e30" });
   EXPECT_EQ(run.output, "vrrw_arm: --seed: 1e30 outside [0, 18446744073709551615]\n");
-  run = runTool("send ur5e --joints 0,0,0,0,0,0 --gripper 0.1");
+  run = runTool({ "send", "ur5e", "--joints", "0,0,0,0,0,0", "--gripper", "0.1" });
   EXPECT_EQ(run.output, "vrrw_arm: --joints and --gripper exclude each other\n");
-  run = runTool("send ur5e --duration 2");
+  run = runTool({ "send", "ur5e", "--duration", "2" });
   EXPECT_EQ(run.output, "vrrw_arm: give one of --csv, --joints, --gripper\n");
 }
 

@@ -11,19 +11,10 @@
 #include <vrrw_demos/demonstration.h>
 
 #include "scripted_demo.h"
+#include "xyz_robot.h"
 
 namespace vrrw_demos_test
 {
-inline const char* kXyzRobot = R"(<robot name="xyz">
-  <link name="world"/><link name="bot_x"/><link name="bot_y"/><link name="bot_tcp"/>
-  <joint name="bot_x_joint" type="prismatic"><parent link="world"/><child link="bot_x"/><axis xyz="1 0 0"/>
-    <limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
-  <joint name="bot_y_joint" type="prismatic"><parent link="bot_x"/><child link="bot_y"/><axis xyz="0 1 0"/>
-    <limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
-  <joint name="bot_z_joint" type="prismatic"><parent link="bot_y"/><child link="bot_tcp"/><axis xyz="0 0 1"/>
-    <limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
-</robot>)";
-
 inline ScriptedDemo hesitantPickPlace(double rate = 100.0)
 {
   using namespace vrrw_demos;
@@ -45,13 +36,7 @@ inline ScriptedDemo hesitantPickPlace(double rate = 100.0)
   const double close_start = 11.8, open_start = 31.2, end = 33.0;
   ScriptedDemo out;
   out.demo.source = "hesitant.bag";
-  out.demo.metadata.robot_description = kXyzRobot;
-  out.demo.metadata.robots["bot"].tcp_link = "bot_tcp";
-  RobotTrack& track = out.demo.robots.emplace_back();
-  track.robot = "bot";
-  track.joint_names = { "bot_x_joint", "bot_y_joint", "bot_z_joint" };
-  track.gripper_joint = "bot_finger_joint";
-  track.gripper_goals = { { close_start, 0.8, 40.0 }, { open_start, 0.0, 0.0 } };
+  RobotTrack& track = addXyzRobot(out.demo, close_start, open_start);
   for (double t = 0; t <= end; t += 1.0 / rate)
   {
     RobotState state;

@@ -6,11 +6,13 @@
 #include <vrrw_common/joint_mapping.h>
 #include <vrrw_common/options.h>
 #include <vrrw_common/run_program.h>
+#include <vrrw_demos/demo_error.h>
 #include <vrrw_dmp/demo_fit.h>
 #include <vrrw_dmp/dmp.h>
 #include <vrrw_dmp/dmp_error.h>
 #include <vrrw_dmp/dmp_yaml.h>
 #include <vrrw_trajectory/csv.h>
+#include <vrrw_trajectory/trajectory_error.h>
 
 #include "../src/ros/demo_source.h"
 
@@ -164,6 +166,16 @@ int plot(int argc, char** argv)
   std::cout << "plotted " << demo.joint_names.size() << " joints -> " << out << "\n";
   return 0;
 }
+
+/// 2 for bad input (an option, a model, CSV or bag it cannot read, parameters it refuses, a file it cannot
+/// write), 1 for a failure while running (the plot script).
+int exitCodeOf(const std::exception& e)
+{
+  const bool bad_input = dynamic_cast<const OptionError*>(&e) || dynamic_cast<const vrrw_dmp::DmpError*>(&e) ||
+                         dynamic_cast<const vrrw_trajectory::TrajectoryError*>(&e) ||
+                         dynamic_cast<const vrrw_demos::DemoError*>(&e);
+  return bad_input ? 2 : 1;
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -185,14 +197,9 @@ int main(int argc, char** argv)
     std::cerr << "vrrw dmp: unknown command '" << command << "'\n" << kUsage;
     return 2;
   }
-  catch (const OptionError& e)
-  {
-    std::cerr << "vrrw dmp " << command << ": " << e.what() << "\n";
-    return 2;
-  }
   catch (const std::exception& e)
   {
     std::cerr << "vrrw dmp " << command << ": " << e.what() << "\n";
-    return 1;
+    return exitCodeOf(e);
   }
 }

@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <vrrw_dmp/dmp_error.h>
+#include <vrrw_dmp/yaml_fields.h>
 #include <vrrw_trajectory/trajectory_error.h>
 #include <vrrw_trajectory/whole_file.h>
 
@@ -18,67 +19,37 @@ namespace
 {
 const char* const kFormat = "vrrw_dmp/1";
 
-YAML::Emitter& flowSequence(YAML::Emitter& out, const std::vector<double>& values)
+/// The model file's fields (its top level named "model" in errors).
+class Reader : public YamlFields
+{
+public:
+  explicit Reader(std::string source) : YamlFields(std::move(source), "model") {}
+};
+}  // namespace
+
+YAML::Node loadYamlMapping(const std::string& text, const std::string& source, const std::string& what)
+{
+  YAML::Node root;
+  try
+  {
+    root = YAML::Load(text);
+  }
+  catch (const YAML::Exception& e)
+  {
+    throw DmpError(source + ":" + std::to_string(e.mark.line + 1) + ": not YAML (cut short?): " + e.msg);
+  }
+  if (!root.IsMap())
+    throw DmpError(source + ": " + what + ": expected a YAML mapping (an empty or cut-short file?)");
+  return root;
+}
+
+void emitNumbers(YAML::Emitter& out, const std::vector<double>& values)
 {
   out << YAML::Flow << YAML::BeginSeq;
   for (double v : values)
     out << v;
-  return out << YAML::EndSeq;
+  out << YAML::EndSeq;
 }
-
-class Reader
-{
-public:
-  explicit Reader(std::string source) : source_(std::move(source)) {}
-
-  YAML::Node child(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    const YAML::Node value = node[key];
-    if (!value)
-      fail(path + key, "missing");
-    return value;
-  }
-
-  template <typename T>
-  T scalar(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    const YAML::Node value = child(node, key, path);
-    try
-    {
-      return value.as<T>();
-    }
-    catch (const YAML::Exception&)
-    {
-      fail(path + key, "is not a " + std::string(std::is_same<T, std::string>::value ? "string" : "number"));
-    }
-  }
-
-  std::vector<double> numbers(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    const YAML::Node value = child(node, key, path);
-    if (!value.IsSequence())
-      fail(path + key, "is not a list of numbers");
-    try
-    {
-      return value.as<std::vector<double>>();
-    }
-    catch (const YAML::Exception&)
-    {
-      fail(path + key, "is not a list of numbers");
-    }
-  }
-
-  const std::string& source() const { return source_; }
-
-  [[noreturn]] void fail(const std::string& field, const std::string& reason) const
-  {
-    throw DmpError(source_ + ": " + field + ": " + reason);
-  }
-
-private:
-  std::string source_;
-};
-}  // namespace
 
 void emitDmpFields(YAML::Emitter& out, const Dmp& dmp)
 {
@@ -96,9 +67,9 @@ void emitDmpFields(YAML::Emitter& out, const Dmp& dmp)
   out << YAML::Key << "demo_duration" << YAML::Value << dmp.demoDuration();
   out << YAML::Key << "basis" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "centers" << YAML::Value;
-  flowSequence(out, dmp.basis().centers());
+  emitNumbers(out, dmp.basis().centers());
   out << YAML::Key << "widths" << YAML::Value;
-  flowSequence(out, dmp.basis().widths());
+  emitNumbers(out, dmp.basis().widths());
   out << YAML::EndMap;
   out << YAML::Key << "joints" << YAML::Value << YAML::BeginSeq;
   for (std::size_t j = 0; j < dmp.dofs(); ++j)
@@ -110,7 +81,7 @@ void emitDmpFields(YAML::Emitter& out, const Dmp& dmp)
     out << YAML::Key << "goal" << YAML::Value << dmp.demoGoal()[j];
     out << YAML::Key << "amplitude" << YAML::Value << dmp.demoAmplitude()[j];
     out << YAML::Key << "weights" << YAML::Value;
-    flowSequence(out, dmp.weights()[j]);
+    emitNumbers(out, dmp.weights()[j]);
     out << YAML::EndMap;
   }
   out << YAML::EndSeq;
@@ -143,7 +114,7 @@ void emitCartesianDmpFields(YAML::Emitter& out, const CartesianDmp& dmp)
 {
   const OrientationDmp& o = dmp.orientation();
   auto quaternion = [&out](const Eigen::Quaterniond& q) {
-    flowSequence(out, { q.x(), q.y(), q.z(), q.w() });
+    emitNumbers(out, { q.x(), q.y(), q.z(), q.w() });
   };
   out << YAML::Key << "position" << YAML::Value << YAML::BeginMap;
   emitDmpFields(out, dmp.position());
@@ -154,7 +125,7 @@ void emitCartesianDmpFields(YAML::Emitter& out, const CartesianDmp& dmp)
   out << YAML::Key << "goal" << YAML::Value;
   quaternion(o.demoGoal());
   out << YAML::Key << "amplitude" << YAML::Value;
-  flowSequence(out, { o.demoAmplitude().x(), o.demoAmplitude().y(), o.demoAmplitude().z() });
+  emitNumbers(out, { o.demoAmplitude().x(), o.demoAmplitude().y(), o.demoAmplitude().z() });
   out << YAML::Key << "axes" << YAML::Value << YAML::BeginSeq;
   for (std::size_t a = 0; a < 3; ++a)
   {
@@ -162,7 +133,7 @@ void emitCartesianDmpFields(YAML::Emitter& out, const CartesianDmp& dmp)
     out << YAML::Key << "name" << YAML::Value << std::string(1, "xyz"[a]);
     out << YAML::Key << "scaling" << YAML::Value << toString(o.axisScaling()[a]);
     out << YAML::Key << "weights" << YAML::Value;
-    flowSequence(out, o.weights()[a]);
+    emitNumbers(out, o.weights()[a]);
     out << YAML::EndMap;
   }
   out << YAML::EndSeq;
@@ -271,17 +242,7 @@ Eigen::Quaterniond quaternion(const YAML::Node& node, const std::string& key, co
 Dmp parseModel(const std::string& text, const std::string& source)
 {
   const Reader read(source);
-  YAML::Node root;
-  try
-  {
-    root = YAML::Load(text);
-  }
-  catch (const YAML::Exception& e)
-  {
-    throw DmpError(source + ":" + std::to_string(e.mark.line + 1) + ": not YAML: " + e.msg);
-  }
-  if (!root.IsMap())
-    read.fail("model", "expected a YAML mapping");
+  const YAML::Node root = loadYamlMapping(text, source, "model");
   const auto format = read.scalar<std::string>(root, "format", "");
   if (format != kFormat)
     read.fail("format", "'" + format + "' is not '" + kFormat + "'");

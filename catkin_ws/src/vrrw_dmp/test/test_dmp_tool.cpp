@@ -2,16 +2,15 @@
 // never touch an existing one; what it writes appears whole.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 
+#include <vrrw_common/run_program.h>
 #include <vrrw_trajectory/csv.h>
 
 #include "demo_fixture.h"
@@ -20,22 +19,11 @@ namespace
 {
 namespace fs = std::filesystem;
 
-struct ToolRun
+/// Runs the tool with \a arguments as given (no shell); its status and output.
+vrrw_common::ProgramRun runTool(std::vector<std::string> arguments)
 {
-  int status = -1;
-  std::string output;  ///< stdout and stderr
-};
-
-ToolRun runTool(const std::string& arguments)
-{
-  ToolRun run;
-  FILE* pipe = ::popen((std::string(VRRW_DMP_TOOL) + " " + arguments + " 2>&1").c_str(), "r");
-  char buffer[512];
-  while (std::fgets(buffer, sizeof(buffer), pipe))
-    run.output += buffer;
-  const int status = ::pclose(pipe);
-  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
+  arguments.insert(arguments.begin(), VRRW_DMP_TOOL);
+  return vrrw_common::runCapturing(arguments);
 }
 
 std::string contentsOf(const fs::path& path)
@@ -73,15 +61,15 @@ protected:
 
 TEST_F(DmpTool, LearnsAndRollsOutWholeFiles)
 {
-  const ToolRun learned = runTool("learn --demo " + path("demo.csv") + " --out " + path("model.yaml"));
+  const auto learned = runTool({ "learn", "--demo", path("demo.csv"), "--out", path("model.yaml") });
   ASSERT_EQ(learned.status, 0) << learned.output;
-  const ToolRun rolled = runTool("rollout --model " + path("model.yaml") + " --dt 0.01 --out " + path("plan.csv"));
+  const auto rolled = runTool({ "rollout", "--model", path("model.yaml"), "--dt", "0.01", "--out", path("plan.csv") });
   ASSERT_EQ(rolled.status, 0) << rolled.output;
   const auto plan = vrrw_trajectory::readCsv(path("plan.csv"));
   EXPECT_GE(plan.points.size(), 201u);  // 2 s at 100 Hz, then settling
   EXPECT_NE(rolled.output.find("rolled out " + std::to_string(plan.points.size()) + " samples"), std::string::npos);
-  const ToolRun plotted = runTool("plot --demo " + path("demo.csv") + " --rollout " + path("plan.csv") + " --out " +
-                              path("dmp.png"));
+  const auto plotted =
+      runTool({ "plot", "--demo", path("demo.csv"), "--rollout", path("plan.csv"), "--out", path("dmp.png") });
   ASSERT_EQ(plotted.status, 0) << plotted.output;
   EXPECT_EQ(contentsOf(folder_ / "dmp.png").substr(1, 3), "PNG");
   EXPECT_EQ(filesIn(folder_), (std::set<std::string>{ "demo.csv", "model.yaml", "plan.csv", "dmp.png" }));
@@ -89,12 +77,13 @@ TEST_F(DmpTool, LearnsAndRollsOutWholeFiles)
 
 TEST_F(DmpTool, RefusedRolloutsKeepTheOldFileAndLeaveNothingBeside)
 {
-  ASSERT_EQ(runTool("learn --demo " + path("demo.csv") + " --out " + path("model.yaml")).status, 0);
+  ASSERT_EQ(runTool({ "learn", "--demo", path("demo.csv"), "--out", path("model.yaml") }).status, 0);
   std::ofstream(path("plan.csv")) << "the previous plan\n";
-  for (const std::string too_long : { "--tau 1e6", "--dt 1e-7" })
+  for (const auto& [option, value] : { std::pair{ "--tau", "1e6" }, std::pair{ "--dt", "1e-7" } })
   {
-    const ToolRun refused = runTool("rollout --model " + path("model.yaml") + " " + too_long + " --out " + path("plan.csv"));
-    EXPECT_EQ(refused.status, 1) << too_long;
+    const auto refused =
+        runTool({ "rollout", "--model", path("model.yaml"), option, value, "--out", path("plan.csv") });
+    EXPECT_EQ(refused.status, 2) << option;
     EXPECT_NE(refused.output.find("more than the limit of 1000000: raise dt or shorten tau"), std::string::npos)
         << refused.output;
     EXPECT_EQ(std::count(refused.output.begin(), refused.output.end(), '\n'), 1) << refused.output;
@@ -105,12 +94,26 @@ TEST_F(DmpTool, RefusedRolloutsKeepTheOldFileAndLeaveNothingBeside)
 
 TEST_F(DmpTool, RefusedLearningWritesNoModel)
 {
-  const ToolRun refused = runTool("learn --demo " + path("demo.csv") + " --basis 1000000000 --out " + path("model.yaml"));
-  EXPECT_EQ(refused.status, 1);
+  const auto refused =
+      runTool({ "learn", "--demo", path("demo.csv"), "--basis", "1000000000", "--out", path("model.yaml") });
+  EXPECT_EQ(refused.status, 2);
   EXPECT_EQ(refused.output, "vrrw dmp learn: basis count N = 1000000000: more than the limit of 10000\n");
-  const ToolRun unwritable = runTool("learn --demo " + path("demo.csv") + " --out " + path("missing/model.yaml"));
-  EXPECT_EQ(unwritable.status, 1);
+  const auto unwritable = runTool({ "learn", "--demo", path("demo.csv"), "--out", path("missing/model.yaml") });
+  EXPECT_EQ(unwritable.status, 2);
   EXPECT_NE(unwritable.output.find("missing/model.yaml: cannot open for writing"), std::string::npos)
       << unwritable.output;
   EXPECT_EQ(filesIn(folder_), (std::set<std::string>{ "demo.csv" }));
+}
+
+TEST_F(DmpTool, AFileItCannotUseIsBadInput)
+{
+  std::ofstream(path("model.yaml")) << "format: [not, a, model\n";
+  const auto model = runTool({ "rollout", "--model", path("model.yaml"), "--out", path("plan.csv") });
+  EXPECT_EQ(model.status, 2);
+  EXPECT_EQ(model.output.rfind("vrrw dmp rollout: " + path("model.yaml") + ":", 0), 0u) << model.output;
+  EXPECT_EQ(std::count(model.output.begin(), model.output.end(), '\n'), 1) << model.output;
+  const auto demo = runTool({ "learn", "--demo", path("missing.csv"), "--out", path("new.yaml") });
+  EXPECT_EQ(demo.status, 2);
+  EXPECT_EQ(demo.output.rfind("vrrw dmp learn: " + path("missing.csv") + ":", 0), 0u) << demo.output;
+  EXPECT_EQ(filesIn(folder_), (std::set<std::string>{ "demo.csv", "model.yaml" }));
 }

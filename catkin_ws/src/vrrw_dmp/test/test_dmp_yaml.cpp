@@ -99,10 +99,12 @@ TEST(DmpYaml, BadModelFilesNameTheField)
   EXPECT_EQ(errorOf(replaced(good, "scaling: amplitude", "scaling: auto")),
             "model.yaml: joints[4].scaling: 'auto' is not goal or amplitude");
   EXPECT_EQ(errorOf(replaced(good, "weights: [", "weights: [.nan, ")),
+            "model.yaml: joints[0].weights: holds a number that is not finite");
+  EXPECT_EQ(errorOf(replaced(good, "weights: [", "weights: [0.5, ")),
             "model.yaml: model: weights of joint 'joint_1': 41 values for 40 basis functions");
   EXPECT_EQ(errorOf(replaced(good, "    start: ", "    start: .nan #")),
-            "model.yaml: model: demo start: value 1 is not finite");
+            "model.yaml: joints[0].start: is not a finite number");
   EXPECT_NE(errorOf("[1, 2").find("model.yaml:"), std::string::npos);
-  EXPECT_EQ(errorOf("- 1\n"), "model.yaml: model: expected a YAML mapping");
+  EXPECT_EQ(errorOf("- 1\n"), "model.yaml: model: expected a YAML mapping (an empty or cut-short file?)");
   EXPECT_THROW(vrrw_dmp::loadDmp("/nonexistent/model.yaml"), DmpError);
 }

@@ -13,21 +13,7 @@
 
 namespace
 {
-struct ToolRun
-{
-  int status = -1;
-  std::string output;  ///< stdout and stderr
-};
-
-/// Runs \a argv (no shell, vrrw_common::runProgram) and collects its output.
-ToolRun run(const std::vector<std::string>& argv)
-{
-  std::string out, errors;
-  ToolRun result;
-  result.status = vrrw_common::runProgram(argv, { nullptr, &out, &errors, false });
-  result.output = out + errors;
-  return result;
-}
+using vrrw_common::runCapturing;  // a tool run as a user runs it: its status and output
 
 const std::vector<std::string> kArm = { "ur5e_shoulder_pan_joint", "ur5e_shoulder_lift_joint", "ur5e_elbow_joint",
                                         "ur5e_wrist_1_joint",      "ur5e_wrist_2_joint",       "ur5e_wrist_3_joint" };
@@ -44,7 +30,7 @@ TEST(PlanTool, APresetsPlanIsSummarisedKeptAndSent)
 {
   char folder[] = "/tmp/vrrw_plan_tool_XXXXXX";
   const std::string csv = std::string(::mkdtemp(folder)) + "/square_left.csv";
-  const ToolRun plan = run({ VRRW_PLAN_TOOL, "ur5e", "--preset", "square_left", "--seed", "2", "--out", csv });
+  const auto plan = runCapturing({ VRRW_PLAN_TOOL, "ur5e", "--preset", "square_left", "--seed", "2", "--out", csv });
   ASSERT_EQ(plan.status, 0) << plan.output;
   std::smatch m;
   const std::regex summary("planned in ([0-9.e-]+) s: ([0-9]+) points over ([0-9.e-]+) s, max joint speed ([0-9.e-]+) "
@@ -63,7 +49,7 @@ TEST(PlanTool, APresetsPlanIsSummarisedKeptAndSent)
   EXPECT_EQ(kept.points.size(), points);
   EXPECT_NEAR(kept.points.back().time - kept.points.front().time, duration, 1e-3);
 
-  const ToolRun send = run({ VRRW_ARM_TOOL, "send", "ur5e", "--csv", csv });
+  const auto send = runCapturing({ VRRW_ARM_TOOL, "send", "ur5e", "--csv", csv });
   EXPECT_EQ(send.status, 0) << send.output;
   ros::WallDuration(0.2).sleep();
   const auto q = arm();
@@ -75,19 +61,19 @@ TEST(PlanTool, APresetsPlanIsSummarisedKeptAndSent)
 
 TEST(PlanTool, MistakesAreOneLine)
 {
-  auto r = run({ VRRW_PLAN_TOOL, "ur5e", "--preset", "dance" });
+  auto r = runCapturing({ VRRW_PLAN_TOOL, "ur5e", "--preset", "dance" });
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.output.find("vrrw_plan: "), std::string::npos);
   EXPECT_NE(r.output.find("dance"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("square_left"), std::string::npos) << r.output;  // the known ones are named
   EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
-  r = run({ VRRW_PLAN_TOOL, "ur5e", "--out", "/tmp", "--preset", "home" });
+  r = runCapturing({ VRRW_PLAN_TOOL, "ur5e", "--out", "/tmp", "--preset", "home" });
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.output.rfind("vrrw_plan: --out: /tmp: exists; not overwritten\n", 0), 0u) << r.output;
-  r = run({ VRRW_PLAN_TOOL, "ur5e", "--joints", "0,0,0" });
+  r = runCapturing({ VRRW_PLAN_TOOL, "ur5e", "--joints", "0,0,0" });
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.output.rfind("vrrw_plan: --joints: 3 values, expected 6\n", 0), 0u) << r.output;
-  r = run({ VRRW_PLAN_TOOL, "ur5e", "--preset", "home", "--joints", "0,0,0,0,0,0" });
+  r = runCapturing({ VRRW_PLAN_TOOL, "ur5e", "--preset", "home", "--joints", "0,0,0,0,0,0" });
   EXPECT_EQ(r.output.rfind("vrrw_plan: --joints and --preset exclude each other\n", 0), 0u) << r.output;
 }
 

@@ -78,6 +78,11 @@ int main(int argc, char** argv)
   {
     scene = vrrw_scene::loadScene(scene_name);
   }
+  catch (const vrrw_scene::SceneError& e)  // nothing to publish without the scene: the node does not start
+  {
+    ROS_FATAL("scene_node: ~scene '%s': %s", scene_name.c_str(), e.what());
+    return 2;
+  }
   catch (const std::exception& e)
   {
     ROS_FATAL("scene_node: ~scene '%s': %s", scene_name.c_str(), e.what());

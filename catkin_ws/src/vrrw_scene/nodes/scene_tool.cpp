@@ -84,7 +84,12 @@ int main(int argc, char** argv)
     std::cerr << "vrrw_scene: " << e.what() << "\n";
     return usage();
   }
-  catch (const std::exception& e)
+  catch (const vrrw_scene::SceneError& e)  // a scene it cannot load, a URDF it cannot write: bad input
+  {
+    std::cerr << "vrrw_scene: " << e.what() << std::endl;
+    return 2;
+  }
+  catch (const std::exception& e)  // a failure while running (the cache folder, xacro's process)
   {
     std::cerr << "vrrw_scene: " << e.what() << std::endl;
     return 1;

@@ -10,6 +10,7 @@
 
 #include <vrrw_dmp/dmp_error.h>
 #include <vrrw_dmp/dmp_yaml.h>
+#include <vrrw_dmp/yaml_fields.h>
 #include <vrrw_skills/skill_error.h>
 #include <vrrw_trajectory/trajectory_error.h>
 #include <vrrw_trajectory/whole_file.h>
@@ -21,22 +22,16 @@ namespace
 /// A skill file bigger than this is refused before parsing (a skill of 6 instructions is about 60 KB).
 constexpr std::streamoff kMaxFileBytes = 16 * 1024 * 1024;
 
-void numbers(YAML::Emitter& out, const std::vector<double>& values)
-{
-  out << YAML::Flow << YAML::BeginSeq;
-  for (double v : values)
-    out << v;
-  out << YAML::EndSeq;
-}
+using vrrw_dmp::emitNumbers;
 
 void pose(YAML::Emitter& out, const std::string& key, const CartesianPose& value)
 {
   const Eigen::Quaterniond& q = value.orientation;
   out << YAML::Key << key << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "position" << YAML::Value;
-  numbers(out, { value.position.x(), value.position.y(), value.position.z() });
+  emitNumbers(out, { value.position.x(), value.position.y(), value.position.z() });
   out << YAML::Key << "orientation" << YAML::Value;
-  numbers(out, { q.x(), q.y(), q.z(), q.w() });
+  emitNumbers(out, { q.x(), q.y(), q.z(), q.w() });
   out << YAML::EndMap;
 }
 
@@ -46,9 +41,9 @@ void keyframe(YAML::Emitter& out, const std::string& key, const Keyframe& value)
   out << YAML::Key << "frame" << YAML::Value << toString(value.frame);
   const Eigen::Quaterniond& q = value.pose.orientation;
   out << YAML::Key << "position" << YAML::Value;
-  numbers(out, { value.pose.position.x(), value.pose.position.y(), value.pose.position.z() });
+  emitNumbers(out, { value.pose.position.x(), value.pose.position.y(), value.pose.position.z() });
   out << YAML::Key << "orientation" << YAML::Value;
-  numbers(out, { q.x(), q.y(), q.z(), q.w() });
+  emitNumbers(out, { q.x(), q.y(), q.z(), q.w() });
   out << YAML::EndMap;
 }
 
@@ -69,9 +64,9 @@ void instruction(YAML::Emitter& out, const SkillInstruction& value)
   keyframe(out, "start", value.start);
   keyframe(out, "end", value.end);
   out << YAML::Key << "joints_start" << YAML::Value;
-  numbers(out, value.joints_start);
+  emitNumbers(out, value.joints_start);
   out << YAML::Key << "joints_end" << YAML::Value;
-  numbers(out, value.joints_end);
+  emitNumbers(out, value.joints_end);
   out << YAML::Key << "fit" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "joint_rmse_rad" << YAML::Value << value.joint_fit_rmse;
   out << YAML::Key << "cartesian_rmse_m" << YAML::Value << value.cartesian_fit_rmse;
@@ -103,79 +98,12 @@ void source(YAML::Emitter& out, const SkillSource& value)
   out << YAML::EndSeq << YAML::EndMap;
 }
 
-/// Reads fields with errors `SOURCE: path.to.field: reason`.
-class Reader
+/// A skill file's fields (vrrw_dmp::YamlFields, its top level named "skill"), its poses and keyframes; errors
+/// `SOURCE: path.to.field: reason` as DmpError, a SkillError at fromYaml.
+class Reader : public vrrw_dmp::YamlFields
 {
 public:
-  explicit Reader(std::string source) : source_(std::move(source)) {}
-
-  YAML::Node child(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    if (!node.IsMap())
-      fail(path.empty() ? "skill" : path.substr(0, path.size() - 1), "expected a mapping");
-    const YAML::Node value = node[key];
-    if (!value)
-      fail(path + key, "missing");
-    return value;
-  }
-
-  template <typename T>
-  T scalar(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    const YAML::Node value = child(node, key, path);
-    try
-    {
-      if (!value.IsScalar())
-        throw YAML::Exception(YAML::Mark::null_mark(), "");
-      const T read = value.as<T>();
-      if constexpr (std::is_floating_point<T>::value)
-        if (!std::isfinite(read))
-          fail(path + key, "is not a finite number");
-      return read;
-    }
-    catch (const YAML::Exception&)
-    {
-      fail(path + key, std::is_same<T, std::string>::value ? "is not a string" : "is not a number");
-    }
-  }
-
-  std::vector<double> numbers(const YAML::Node& node, const std::string& key, const std::string& path,
-                              std::size_t size = 0) const
-  {
-    const YAML::Node value = child(node, key, path);
-    std::vector<double> read;
-    try
-    {
-      if (!value.IsSequence())
-        throw YAML::Exception(YAML::Mark::null_mark(), "");
-      read = value.as<std::vector<double>>();
-    }
-    catch (const YAML::Exception&)
-    {
-      fail(path + key, "is not a list of numbers");
-    }
-    for (double v : read)
-      if (!std::isfinite(v))
-        fail(path + key, "holds a number that is not finite");
-    if (size > 0 && read.size() != size)
-      fail(path + key, std::to_string(read.size()) + " numbers, expected " + std::to_string(size));
-    return read;
-  }
-
-  std::vector<std::string> strings(const YAML::Node& node, const std::string& key, const std::string& path) const
-  {
-    const YAML::Node value = child(node, key, path);
-    try
-    {
-      if (!value.IsSequence())
-        throw YAML::Exception(YAML::Mark::null_mark(), "");
-      return value.as<std::vector<std::string>>();
-    }
-    catch (const YAML::Exception&)
-    {
-      fail(path + key, "is not a list of names");
-    }
-  }
+  explicit Reader(std::string source) : YamlFields(std::move(source), "skill") {}
 
   CartesianPose pose(const YAML::Node& node, const std::string& key, const std::string& path) const
   {
@@ -201,19 +129,9 @@ public:
   {
     const YAML::Node value = child(node, key, path);
     const std::string at = path + key + ".";
-    return { frameFromString(scalar<std::string>(value, "frame", at), source_ + ": " + at + "frame"),
+    return { frameFromString(scalar<std::string>(value, "frame", at), source() + ": " + at + "frame"),
              poseIn(value, at) };
   }
-
-  const std::string& source() const { return source_; }
-
-  [[noreturn]] void fail(const std::string& field, const std::string& reason) const
-  {
-    throw SkillError(source_ + ": " + field + ": " + reason);
-  }
-
-private:
-  std::string source_;
 };
 
 SkillInstruction readInstruction(const YAML::Node& node, const Reader& read, const std::string& at,
@@ -329,7 +247,7 @@ std::string toYaml(const Skill& skill)
   out << YAML::Key << "tcp_link" << YAML::Value << skill.tcp_link;
   out << YAML::Key << "gripper_joint" << YAML::Value << skill.gripper_joint;
   out << YAML::Key << "home" << YAML::Value;
-  numbers(out, skill.joints_home);
+  emitNumbers(out, skill.joints_home);
   out << YAML::EndMap;
   out << YAML::Key << "object" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "name" << YAML::Value << skill.object;
@@ -362,17 +280,19 @@ Skill fromYaml(const std::string& text, const std::string& source)
   YAML::Node root;
   try
   {
-    root = YAML::Load(text);
+    root = vrrw_dmp::loadYamlMapping(text, source, "skill");
   }
-  catch (const YAML::Exception& e)
+  catch (const vrrw_dmp::DmpError& e)
   {
-    throw SkillError(source + ":" + std::to_string(e.mark.line + 1) + ": not YAML (cut short?): " + e.msg);
+    throw SkillError(e.what());
   }
-  if (!root.IsMap())
-    read.fail("skill", "expected a YAML mapping (an empty or cut-short file?)");
   try
   {
     return parse(root, read);
+  }
+  catch (const vrrw_dmp::DmpError& e)
+  {
+    throw SkillError(e.what());
   }
   catch (const YAML::Exception& e)
   {

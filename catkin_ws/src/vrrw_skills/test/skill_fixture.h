@@ -15,6 +15,8 @@
 #include <vrrw_demos/segmentation.h>
 #include <vrrw_skills/skill_plan.h>
 
+#include "xyz_robot.h"  // vrrw_demos/test/
+
 namespace vrrw_skills_test
 {
 using vrrw_skills::CartesianPose;
@@ -160,18 +162,6 @@ public:
   CartesianPose tcp(const std::vector<double>& joints) override { return poseOf(joints); }
 };
 
-/// A robot whose joints are its TCP's x, y and z (a URDF of three prismatic joints), for demonstrations built
-/// in code that the learner reads as it reads a bag's.
-inline const char* kXyzRobot = R"(<robot name="xyz">
-  <link name="world"/><link name="bot_x"/><link name="bot_y"/><link name="bot_tcp"/>
-  <joint name="bot_x_joint" type="prismatic"><parent link="world"/><child link="bot_x"/><axis xyz="1 0 0"/>
-    <limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
-  <joint name="bot_y_joint" type="prismatic"><parent link="bot_x"/><child link="bot_y"/><axis xyz="0 1 0"/>
-    <limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
-  <joint name="bot_z_joint" type="prismatic"><parent link="bot_y"/><child link="bot_tcp"/><axis xyz="0 0 1"/>
-    <limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
-</robot>)";
-
 /// A pick-and-place by the xyz robot at 100 Hz with pauses: a box at (0.4, 0.1, 0.8) taken 15 cm above its
 /// centre (the TCP at 0.95), lifted, carried 30 cm in y and set down; the box follows the TCP while held.
 inline vrrw_demos::Demonstration xyzPickPlace(const std::string& source = "xyz.bag")
@@ -188,14 +178,8 @@ inline vrrw_demos::Demonstration xyzPickPlace(const std::string& source = "xyz.b
   const double close = 4.3, open = 12.0, end = 13.5;
   vrrw_demos::Demonstration demo;
   demo.source = source;
-  demo.metadata.robot_description = kXyzRobot;
-  demo.metadata.robots["bot"].tcp_link = "bot_tcp";
   demo.metadata.scene = "xyz_cell";
-  vrrw_demos::RobotTrack& track = demo.robots.emplace_back();
-  track.robot = "bot";
-  track.joint_names = { "bot_x_joint", "bot_y_joint", "bot_z_joint" };
-  track.gripper_joint = "bot_finger_joint";
-  track.gripper_goals = { { close, 0.8, 40.0 }, { open, 0.0, 0.0 } };
+  vrrw_demos::RobotTrack& track = vrrw_demos_test::addXyzRobot(demo, close, open);
   auto jerk = [](double u) { u = std::clamp(u, 0.0, 1.0); return u * u * u * (10 - 15 * u + 6 * u * u); };
   for (int k = 0; k * 0.01 <= end; ++k)
   {

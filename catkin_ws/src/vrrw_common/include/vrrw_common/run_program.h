@@ -21,4 +21,14 @@ int runProgram(const std::vector<std::string>& argv, const ProgramStreams& strea
 /// \brief The same with \a output (optional) receiving its standard output; \a quiet sends its standard error
 /// to /dev/null.
 int runProgram(const std::vector<std::string>& argv, std::string* output = nullptr, bool quiet = false);
+
+/// \brief How a program ended and what it printed.
+struct ProgramRun
+{
+  int status = -1;     ///< as runProgram returns it
+  std::string output;  ///< its standard output, then its standard error
+};
+
+/// \brief Runs \a argv as runProgram does, keeping all it prints: a tool run as a user runs it (the tools' tests).
+ProgramRun runCapturing(const std::vector<std::string>& argv);
 }  // namespace vrrw_common

@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include <vrrw_dmp/cartesian_dmp.h>
 #include <vrrw_dmp/dmp.h>
@@ -36,6 +37,13 @@ void emitCartesianDmpFields(YAML::Emitter& out, const CartesianDmp& dmp);
 /// \brief The Cartesian model from such a mapping. Throws DmpError naming the field (a quaternion whose
 /// norm is not 1 among them).
 CartesianDmp parseCartesianDmpFields(const YAML::Node& node, const std::string& source, const std::string& path);
+
+/// \brief \a text as a YAML mapping: the one way model and skill files are opened. Throws DmpError
+/// "SOURCE:LINE: not YAML (cut short?): reason" for text yaml-cpp cannot parse, "SOURCE: WHAT: expected a YAML
+/// mapping (an empty or cut-short file?)" for any other document (\a what: "model", "skill").
+YAML::Node loadYamlMapping(const std::string& text, const std::string& source, const std::string& what);
+/// \brief \a values as one flow list ([a, b, c]) on \a out.
+void emitNumbers(YAML::Emitter& out, const std::vector<double>& values);
 
 /// \brief Writes the model file, complete or not at all (vrrw_trajectory::writeWholeFile); throws
 /// DmpError naming the path.
