@@ -23,8 +23,8 @@ def free_port():
         return s.getsockname()[1]
 
 
-def vrrw(*args, master_port=None):
-    env = dict(os.environ)
+def vrrw(*args, master_port=None, **environment):
+    env = dict(os.environ, **environment)
     if master_port:  # nothing listens there
         env['ROS_MASTER_URI'] = f'http://localhost:{master_port}'
     start = time.monotonic()
@@ -35,8 +35,8 @@ def vrrw(*args, master_port=None):
 
 
 class Refusals(unittest.TestCase):
-    def refused(self, line, *args, code=2):
-        result = vrrw(*args)
+    def refused(self, line, *args, code=2, **environment):
+        result = vrrw(*args, **environment)
         self.assertEqual((result.returncode, result.stderr), (code, line + '\n'), result.stdout)
         return result
 
@@ -59,6 +59,11 @@ class Refusals(unittest.TestCase):
         for rtf in ('0', '-1', 'nan', 'fast'):
             self.refused(f"vrrw: demo: --rtf: '{rtf}' is not max or a positive number (the real-time factor; 1: "
                          "paced at real time)", 'demo', '--out', out, '--rtf', rtf)
+        for display in ('x', ':a', '123456'):
+            self.refused(f"demo: VRRW_DISPLAY: '{display}' is not an X display number (64 or :64)", 'demo', '--out',
+                         out, VRRW_DISPLAY=display)
+        self.refused("demo: VRRW_ROS_PORT: '1e4' is not a port number (11311)", 'demo', '--out', out,
+                     VRRW_ROS_PORT='1e4')
         self.assertTrue(os.path.isdir(os.path.join(out, 'frames')))
         with open(os.path.join(out, 'workspace.log')) as f:
             self.assertEqual(f.read(), 'an earlier run\n')

@@ -1,5 +1,6 @@
 """./vrrw up's processes: it names its own PIDs, a node that dies before ready is named and stops the workspace,
-and nothing outlives the launcher: not after Ctrl-C, not after SIGKILL of its process group."""
+and nothing outlives the launcher: not after Ctrl-C, not after SIGINT or SIGTERM to the launcher alone, not after
+SIGKILL of its process group."""
 import os
 import queue
 import re
@@ -124,6 +125,20 @@ class Lifecycle(unittest.TestCase):
             self.assertEqual(workspace.wait_until_gone(workspace.started), [])
         finally:
             workspace.stop()
+
+    def test_sigint_or_sigterm_to_the_launcher_alone_ends_the_workspace_whole(self):
+        # what `kill PID` from another shell does: before, roslaunch (the launcher's foreground child) never heard
+        # of a SIGINT, and a SIGTERM killed the launcher and left the nodes to the watchdog
+        for sent in (signal.SIGINT, signal.SIGTERM):
+            workspace = Workspace('pick_place_drill', '--mode', 'fake')
+            try:
+                ready = workspace.wait_for(r'^ready: 1 robot \(ur5e\), mode fake')
+                self.assertIsNotNone(ready, ''.join(workspace.output))
+                workspace.process.send_signal(sent)
+                self.assertEqual(workspace.process.wait(timeout=60), 0, sent)
+                self.assertEqual(workspace.wait_until_gone(workspace.started), [], sent)
+            finally:
+                workspace.stop()
 
     def test_a_scene_beyond_any_cell_stops_before_any_node(self):
         result = subprocess.run([VRRW, 'up', os.path.join(ROOT, 'test', 'bad_input', 'far_base.yaml')],

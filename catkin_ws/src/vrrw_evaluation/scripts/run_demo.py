@@ -13,6 +13,7 @@ index.html. With --arms, the same trials of the same skill on each of those arms
 relays the demonstration to the real robot whose driver runs under NS on $ROS_MASTER_URI (demo_relay).
 """
 import argparse
+import glob
 import json
 import os
 import re
@@ -208,8 +209,31 @@ def parse_args(argv):
     return args
 
 
+def pinned(name, allowed, example):
+    """The number an environment variable pins (VRRW_DISPLAY: 64 or :64; VRRW_ROS_PORT: 11311), None when unset;
+    anything else ends the demo with one line before it touches anything."""
+    text = os.environ.get(name, '')
+    if not text:
+        return None
+    match = re.fullmatch(allowed, text)
+    if not match:
+        refuse(f"{name}: '{text}' is not {example}")
+    return int(match.group(1))
+
+
+def refuse(line):
+    """Bad input: one line, exit 2, nothing touched."""
+    print(f'demo: {line}', file=sys.stderr)
+    sys.exit(2)
+
+
 def main():
     args = parse_args(sys.argv[1:])
+    # VRRW_DISPLAY / VRRW_ROS_PORT pin the display and the master's port (parallel runs on one machine).
+    display = pinned('VRRW_DISPLAY', r':?(\d{1,4})', 'an X display number (64 or :64)')
+    port = pinned('VRRW_ROS_PORT', r'(\d{1,5})', 'a port number (11311)')
+    if port is not None and not 0 < port < 65536:
+        refuse(f'VRRW_ROS_PORT: {port} is not a port number (1-65535)')
     trials = args.trials
     robot_master = os.environ.get('ROS_MASTER_URI', '')
     if args.real is not None:
@@ -226,8 +250,13 @@ def main():
         sys.exit(checked.stderr.strip() or f'demo: {args.scene}: not usable')
     log(checked.stdout.strip().replace('demo: ', ''))
     out = os.path.abspath(args.out)
+    # an earlier report in the same folder leaves nothing behind: its frames and data files (a 20-trial run's
+    # trial_3..19 beside a --quick run's metrics) go; other files in the folder are not the demo's and stay
     if os.path.isdir(os.path.join(out, 'frames')):
         shutil.rmtree(os.path.join(out, 'frames'))
+    for old in glob.glob(os.path.join(out, 'data', '*.csv')):
+        if re.fullmatch(r'(demonstration|replay|trial_\d+)_(joints|segments|track)\.csv', os.path.basename(old)):
+            os.remove(old)
     os.makedirs(out, exist_ok=True)
 
     start = time.monotonic()
@@ -243,9 +272,8 @@ def main():
                 f'  <param name="/physics/publish_rate" value="100"/>\n  <param name="/physics/paused" value="true"/>\n'
                 f'  <param name="/physics/rtf" value="{args.rtf}"/>\n</launch>\n')
     demo_config(config)
-    # VRRW_DISPLAY / VRRW_ROS_PORT pin the display and the master's port (parallel runs on one machine).
-    display = int(os.environ.get('VRRW_DISPLAY') or render_scene.free_display())
-    port = int(os.environ.get('VRRW_ROS_PORT') or render_scene.free_port())
+    display = display if display is not None else render_scene.free_display()
+    port = port if port is not None else render_scene.free_port()
     env = dict(os.environ, DISPLAY=f':{display}', ROS_MASTER_URI=f'http://127.0.0.1:{port}')
     os.environ.update(env)
     processes = []

@@ -218,8 +218,10 @@ int runRecord(int argc, char** argv, const std::atomic<bool>& interrupted)
   std::cout << "record: " << call.response.message << std::endl;
   std::cout << "record: topics: " << topics << " (more as they appear); Ctrl-C stops" << std::endl;
 
-  // Every kReportPeriod: how much is recorded, from the recorder's status.
-  ros::WallTime next = ros::WallTime::now() + ros::WallDuration(kReportPeriod);
+  // Every kReportPeriod: how much is recorded, from the recorder's status; the seconds on this tool's wall clock
+  // (its ROS clock may not be the recorder's: `record SCENE` starts before the workspace sets /use_sim_time)
+  const ros::WallTime recording_since = ros::WallTime::now();
+  ros::WallTime next = recording_since + ros::WallDuration(kReportPeriod);
   while (!interrupted)
   {
     ros::WallDuration(0.05).sleep();
@@ -241,7 +243,7 @@ int runRecord(int argc, char** argv, const std::atomic<bool>& interrupted)
       continue;
     next += ros::WallDuration(kReportPeriod);
     if (latest.recording)
-      std::cout << "record: " << static_cast<int>((ros::Time::now() - latest.started).toSec()) << " s, "
+      std::cout << "record: " << static_cast<int>((ros::WallTime::now() - recording_since).toSec()) << " s, "
                 << latest.messages << " messages, " << megabytes(latest.bytes) << ", " << latest.topics.size()
                 << " topics" << std::endl;
   }
