@@ -121,7 +121,7 @@ class QuickDemoTest(unittest.TestCase):
 
     def dmp(self, command):
         """A `./vrrw dmp` command line of the README, run on this test's report folder (no shell)."""
-        words = [w.replace('demo_report/', self.out + '/') for w in shlex.split(command)]
+        words = [re.sub(r'^\w+_report/', self.out + '/', w) for w in shlex.split(command)]  # the README's folder
         words = [os.path.join(self.out, w) if w.endswith(('.yaml', '.csv')) else w for w in words]  # beside it
         return subprocess.run([VRRW, *words[1:]], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                               timeout=120)

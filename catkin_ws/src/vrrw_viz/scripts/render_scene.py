@@ -184,9 +184,9 @@ def wait_for_scene(timeout):
     """Until robot_description is set and tf holds every link of it; the links. Waits on the wall clock: a
     paused simulation holds ROS time still."""
     import rospy
-    tf = tf_buffer()
     deadline = time.monotonic() + timeout
     links = wait_for_description(timeout)
+    tf = tf_buffer()  # after the master answers: rospy's node would warn it cannot register while it starts
     for link in links:
         while not tf.can_transform('world', link, rospy.Time(0)):
             if time.monotonic() > deadline:
