@@ -259,6 +259,8 @@ PlannedStep SkillPlanner::armStep(const std::string& name, const SkillScene& sce
   PlannedStep step;
   step.instruction = name;
   step.cartesian = !taughtArm(scene);
+  if (name == "final")
+    step.goal_tolerance = kSetDownTolerance;
   step.trajectory = motion(instruction, scene, from, goal);
   try
   {

@@ -100,6 +100,10 @@ TEST(SkillPlan, TheTaughtArmRollsOutJointDmpsToIkGoalsAndEndsAtThemAtRest)
   EXPECT_NEAR((poseOf(carry[1].trajectory.points.back().positions).position - Eigen::Vector3d(0.4, -0.2, 0.95)).norm(),
               0.0, 1e-9);
   EXPECT_EQ(carry[2].instruction, "open_gripper");
+  // only the set-down ends pressed onto the support: its goal accepts that contact, every other the controller's
+  EXPECT_EQ(carry[1].goal_tolerance, SkillPlanner::kSetDownTolerance);
+  for (const auto* step : { &approach[0], &approach[1], &carry[0] })
+    EXPECT_EQ(step->goal_tolerance, 0.0) << step->instruction;
 }
 
 TEST(SkillPlan, AnotherArmFollowsTheCartesianDmpByIk)

@@ -67,7 +67,7 @@ void SkillRunner::execute(const std::vector<PlannedStep>& steps, RunReport& repo
       progress(step.instruction + ": " + format("%.2f s of motion, %.0f points", step.trajectory.duration(),
                                                 double(step.trajectory.points.size())) +
                (step.cartesian ? " (the Cartesian DMP by IK)" : ""));
-      arm_.execute(step.instruction, step.trajectory);
+      arm_.execute(step.instruction, step.trajectory, step.goal_tolerance);
     }
     report.instruction_seconds.push_back({ step.instruction, (arm_.now() - start).toSec() });
     if (done)

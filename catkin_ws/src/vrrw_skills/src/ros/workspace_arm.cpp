@@ -283,10 +283,19 @@ void WorkspaceArm::stepUntilDone(Client& client, const std::string& instruction,
     throw SkillRefusal(instruction + ": the " + what + " controller ended the goal but its result did not arrive");
 }
 
-void WorkspaceArm::execute(const std::string& instruction, const vrrw_trajectory::JointTrajectory& trajectory)
+void WorkspaceArm::execute(const std::string& instruction, const vrrw_trajectory::JointTrajectory& trajectory,
+                           double goal_tolerance)
 {
   control_msgs::FollowJointTrajectoryGoal goal;
   goal.trajectory = vrrw_trajectory::toMsg(trajectory);
+  if (goal_tolerance > 0.0)
+    for (const std::string& joint : goal.trajectory.joint_names)
+    {
+      control_msgs::JointTolerance tolerance;
+      tolerance.name = joint;
+      tolerance.position = goal_tolerance;
+      goal.goal_tolerance.push_back(tolerance);
+    }
   arm_.sendGoal(goal);
   const double timeout = trajectory.duration() + kResultMargin;
   if (mode_ == "real")

@@ -69,8 +69,10 @@ public:
   void settle(double seconds);
 
   /// \brief One FollowJointTrajectory goal, waited for (simulated time); in real mode confirmed once its
-  /// simulation ended. Throws SkillRefusal naming \a instruction and the controller's answer.
-  void execute(const std::string& instruction, const vrrw_trajectory::JointTrajectory& trajectory);
+  /// simulation ended; \a goal_tolerance (rad, every joint) > 0 replaces the controller's. Throws SkillRefusal
+  /// naming \a instruction and the controller's answer.
+  void execute(const std::string& instruction, const vrrw_trajectory::JointTrajectory& trajectory,
+               double goal_tolerance = 0.0);
   /// \brief One GripperCommand goal; a stall on the object succeeds. Throws SkillRefusal.
   void grip(const std::string& instruction, double position, double max_effort);
 
