@@ -79,7 +79,7 @@ void PickPlaceDemo::generalize(DemoReport& report)
   const auto poses = vrrw_skills::evaluationPoses(skill, evaluation);
   for (std::size_t k = 0; k < poses.size(); ++k)
   {
-    const std::string row = "trial_" + std::to_string(k);
+    const std::string row = "trial_" + std::to_string(k + 1);  // trials count from 1, as the progress lines
     const bool frames = int(k) < options_.shown_trials;
     client_.startRecording();
     std::vector<Segment> segments;
@@ -94,7 +94,7 @@ void PickPlaceDemo::generalize(DemoReport& report)
     };
     const std::string label = "trial " + std::to_string(k + 1) + "/" + std::to_string(poses.size());
     const vrrw_skills::TrialResult result =
-        trials.trial(int(k), poses[k], [&](const std::string& line) { progress(label + ": " + line); }, done);
+        trials.trial(int(k + 1), poses[k], [&](const std::string& line) { progress(label + ": " + line); }, done);
     writeRecording(row, client_.stopRecording(), segments);
     TrialRecord trial;
     trial.trial = result.trial;

@@ -1,4 +1,5 @@
 #include "ghost_operator.h"
+#include "workspace_client.h"
 
 #include <algorithm>
 #include <future>
@@ -13,8 +14,6 @@ namespace vrrw_evaluation
 {
 namespace
 {
-/// Wall seconds for what the interaction node does at once while the simulation waits (send the goal, answer).
-constexpr double kAnswerSeconds = 10.0;
 /// Longest ghost motion stepped (simulated s): a plan is bounded to 600 s, the demo's take a few.
 constexpr double kLongestMotion = 600.0;
 }  // namespace

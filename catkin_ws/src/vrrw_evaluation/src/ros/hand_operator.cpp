@@ -1,4 +1,5 @@
 #include "hand_operator.h"
+#include "workspace_client.h"
 
 #include <algorithm>
 #include <std_srvs/SetBool.h>
@@ -12,8 +13,6 @@ namespace
 constexpr double kRate = 100.0;  // Hz, a tracker's rate (of simulated time)
 /// Poses per step slice (50 ms): fewer than the queues of 10 between the hand and physics hold.
 constexpr std::size_t kSlice = 5;
-/// Wall seconds for what the interaction node does at once (pass a pose on, answer a grip).
-constexpr double kAnswerSeconds = 10.0;
 }  // namespace
 
 HandOperator::HandOperator(ros::NodeHandle& node, const std::string& robot, vrrw_physics::LockstepClient& sim,

@@ -16,9 +16,6 @@ namespace vrrw_evaluation
 namespace
 {
 const std::string kPlace = "/physics/set_object_pose";
-/// Wall seconds this client waits for what a process beside it does at once (take a goal, publish the state
-/// where the simulation stopped): far beyond what it takes on a loaded machine, short of a hang.
-constexpr double kAnswerSeconds = 10.0;
 /// The track's sampling period (simulated s): the top view's and the lift test's 20 Hz.
 constexpr double kTrackPeriod = 0.05;
 

@@ -24,6 +24,11 @@
 
 namespace vrrw_evaluation
 {
+/// Wall seconds a client of the workspace waits for what a process beside it does at once (take a goal, pass a
+/// pose on, answer, publish the state where the simulation stopped): far beyond what it takes on a loaded
+/// machine, short of a hang.
+inline constexpr double kAnswerSeconds = 10.0;
+
 /// \brief One sample of the TCP and the object, for the top view and the lift test.
 struct TrackSample
 {

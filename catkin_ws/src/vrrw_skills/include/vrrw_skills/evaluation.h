@@ -23,7 +23,7 @@ struct EvaluationOptions
 /// \brief One trial: where the object stood, and how it ended.
 struct TrialResult
 {
-  int trial = 0;
+  int trial = 0;  ///< from 1, as the progress lines count
   double x = 0.0, y = 0.0, yaw_deg = 0.0;  ///< the object's start, world
   bool reachable = false;     ///< every goal had a collision-free IK (the run started)
   bool success = false;

@@ -210,7 +210,7 @@ int evaluateCommand(int argc, char** argv)
   {
     const std::string label = "skill evaluate: trial " + std::to_string(k + 1) + "/" + std::to_string(poses.size());
     auto progress = [&label](const std::string& line) { std::cout << label << ": " << line << std::endl; };
-    report.trials.push_back(trials.trial(static_cast<int>(k), poses[k], progress));
+    report.trials.push_back(trials.trial(static_cast<int>(k + 1), poses[k], progress));
     const TrialResult& t = report.trials.back();
     std::printf("%s at (%.3f, %.3f, %.1f deg): %s%s%s\n", label.c_str(), t.x, t.y, t.yaw_deg,
                 t.success ? "success" : "failed", t.reason.empty() ? "" : ": ", t.reason.c_str());

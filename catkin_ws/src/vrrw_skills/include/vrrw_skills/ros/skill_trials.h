@@ -36,7 +36,7 @@ public:
   SkillTrials(const SkillTrials&) = delete;
   SkillTrials& operator=(const SkillTrials&) = delete;
 
-  /// \brief Trial \a index with the object at \a pose (on the table as the demonstration's start stood): the arm
+  /// \brief Trial number \a index (from 1) with the object at \a pose (on the table as the demonstration's start stood): the arm
   /// home and open, the object placed, the skill run, the outcome judged. Progress lines through \a progress,
   /// \a done (when given) at the end of each instruction (SkillRunner::run).
   TrialResult trial(int index, const PlanarPose& pose, const std::function<void(const std::string&)>& progress,
