@@ -10,7 +10,7 @@ TEST(DemoReport, MetricsJsonCarriesTheIssuesKeysAndCountsFailures)
   report.scene = "pick_place_drill";
   report.teach_seconds = 9.5;
   report.bag_messages = 1234;
-  report.segments = { { "move_to_near_pick", 0.0, 2.0 }, { "move_to_pick", 2.0, 3.2 } };
+  report.segments = { { "move_to_near_pick", 0.0, 2.0, false, 0.0, "" }, { "move_to_pick", 2.0, 3.2, false, 0.0, "" } };
   report.replay_joint_rms_rad = 1e-3;
   report.replay_object_position_error_m = 0.004;
   report.replay_object_angle_error_deg = 1.5;
