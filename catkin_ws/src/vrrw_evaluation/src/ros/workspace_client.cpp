@@ -259,6 +259,9 @@ std::optional<vrrw_trajectory::JointTrajectory> WorkspaceClient::plan(const std:
                                                                       std::string& error, double* plan_ms)
 {
   vrrw_msgs::Plan srv;
+  // from the state where the simulation waits: the planner's own joint_states may lag it (a run would then
+  // depend on message timing)
+  srv.request.start = jointState(robot_.arm_joints, armJoints());
   srv.request.goal_joints = jointState(robot_.arm_joints, goal);
   srv.request.time_limit = 2.0;
   srv.request.seed = 1;

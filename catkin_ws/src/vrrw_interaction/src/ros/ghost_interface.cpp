@@ -108,6 +108,7 @@ Outcome GhostInterface::moved(const Outcome& outcome, const std::string& request
 
 bool GhostInterface::onSetJoints(vrrw_msgs::GhostSetJoints::Request& req, vrrw_msgs::GhostSetJoints::Response& res)
 {
+  view_.catchUp();
   std::lock_guard<std::mutex> lock(view_.mutex());
   const Outcome o = moved(ghost_.setJoints(req.name, req.position, view_.liveState()), "set_joints");
   res.success = o.success, res.message = o.message;
@@ -119,6 +120,7 @@ bool GhostInterface::onSetPose(vrrw_msgs::GhostSetPose::Request& req, vrrw_msgs:
   Outcome o;
   try
   {
+    view_.catchUp();
     const Eigen::Isometry3d target = view_.poseInWorld(req.pose);  // (without the mutex: it may look up tf)
     std::lock_guard<std::mutex> lock(view_.mutex());
     o = moved(ghost_.setPose(target, view_.liveState(), std::numeric_limits<double>::infinity()), "set_pose");
@@ -133,6 +135,7 @@ bool GhostInterface::onSetPose(vrrw_msgs::GhostSetPose::Request& req, vrrw_msgs:
 
 Outcome GhostInterface::preset(const std::string& name)
 {
+  view_.catchUp();
   std::lock_guard<std::mutex> lock(view_.mutex());
   const Outcome o = moved(ghost_.preset(name, view_.liveState()), "preset");
   if (o.success)
@@ -155,6 +158,7 @@ Outcome GhostInterface::clearWaypoints()
 
 Outcome GhostInterface::reset()
 {
+  view_.catchUp();
   std::lock_guard<std::mutex> lock(view_.mutex());
   return moved(ghost_.reset(view_.liveState()), "reset");
 }
@@ -164,6 +168,7 @@ Outcome GhostInterface::plan(double time_limit, trajectory_msgs::JointTrajectory
 {
   if (!std::isfinite(time_limit))
     return { false, "time_limit: not finite" };
+  view_.catchUp();
   std::lock_guard<std::mutex> lock(view_.mutex());
   // planning holds the mutex (the arm's planner and the collision world are shared): up to time_limit
   const vrrw_kinematics::TrajectoryResult result = ghost_.plan(view_.liveState(), time_limit, scaling, profile);

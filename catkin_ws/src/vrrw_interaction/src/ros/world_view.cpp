@@ -4,9 +4,19 @@
 #include <vrrw_kinematics/ik_solver.h>
 #include <vrrw_kinematics/scene_state.h>
 #include <vrrw_msgs/Event.h>
+#include <vrrw_physics/Step.h>
+
+#include <chrono>
+#include <thread>
 
 namespace vrrw_interaction
 {
+namespace
+{
+/// Longest wait for the state where the simulation waits: its messages are one publish away (milliseconds).
+constexpr double kCatchUpSeconds = 2.0;
+}  // namespace
+
 WorldView::WorldView(ros::NodeHandle& nh, const vrrw_scene::Scene& scene, std::string mode)
   : scene_(scene)
   , mode_(std::move(mode))
@@ -25,13 +35,47 @@ WorldView::WorldView(ros::NodeHandle& nh, const vrrw_scene::Scene& scene, std::s
 
 void WorldView::onJointStates(const sensor_msgs::JointState& msg)
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  for (std::size_t i = 0; i < msg.name.size() && i < msg.position.size(); ++i)
-    if (const int v = world_.model().variableIndex(msg.name[i]); v >= 0 && std::isfinite(msg.position[i]))
-      live_[v] = msg.position[i];
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (std::size_t i = 0; i < msg.name.size() && i < msg.position.size(); ++i)
+      if (const int v = world_.model().variableIndex(msg.name[i]); v >= 0 && std::isfinite(msg.position[i]))
+        live_[v] = msg.position[i];
+    live_stamp_ = std::max(live_stamp_, msg.header.stamp);
+  }
+  arrived_.notify_all();
 }
 
-void WorldView::refreshObjects()
+void WorldView::catchUp()
+{
+  vrrw_physics::Step where;  // duration 0: no step, the answer names the instant the simulation waits at
+  {
+    std::lock_guard<std::mutex> lock(step_mutex_);
+    if (mode_ != "physics")
+      return;
+    if (!step_.isValid())  // (a persistent connection that broke is made anew)
+      step_ = ros::NodeHandle().serviceClient<vrrw_physics::Step>("/physics/step", true);
+    if (!step_.call(where) || !where.response.success)
+      return;  // paced (the simulation runs), a step under way, or no physics node: the live state is all there is
+  }
+  const ros::Time at = where.response.time;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kCatchUpSeconds);
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (!arrived_.wait_until(lock, deadline, [&] { return live_stamp_ >= at && contacts_stamp_ >= at; }))
+    {
+      ROS_WARN_STREAM_THROTTLE(5.0, "interaction: no joint state or contacts at the simulation's stop ("
+                                        << at.toSec() << " s) within " << kCatchUpSeconds << " s: using the last ones");
+      return;
+    }
+  }
+  const std::string& root = world_.model().links()[0].name;  // (the model never changes: no lock)
+  for (const vrrw_scene::Object& object : scene_.objects)
+    while (!object.fixed && !tf_.canTransform(root, object.name, at) && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  refreshObjects(at);
+}
+
+void WorldView::refreshObjects(const ros::Time& at)
 {
   const std::string& root = world_.model().links()[0].name;
   std::map<std::string, Eigen::Isometry3d> poses;  // looked up before taking the mutex
@@ -39,7 +83,7 @@ void WorldView::refreshObjects()
     try
     {
       if (!object.fixed)
-        poses[object.name] = tf2::transformToEigen(tf_.lookupTransform(root, object.name, ros::Time(0)));
+        poses[object.name] = tf2::transformToEigen(tf_.lookupTransform(root, object.name, at));
     }
     catch (const tf2::TransformException&)
     {
@@ -69,12 +113,14 @@ void WorldView::onContacts(const vrrw_physics::Contacts& msg)
   std::vector<HeldEvent> events;
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    contacts_stamp_ = std::max(contacts_stamp_, msg.header.stamp);
     for (const vrrw_scene::Object& object : scene_.objects)
       if (!object.fixed)
         for (HeldEvent& e : held_.update(object.name, held_.squeezedBy(object.name, contacts, live_), live_,
                                          ros::Time::now().toSec()))
           events.push_back(std::move(e));
   }
+  arrived_.notify_all();
   publish(events);
 }
 

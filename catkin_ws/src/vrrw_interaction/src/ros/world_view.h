@@ -1,5 +1,6 @@
 #pragma once
 #include <Eigen/Geometry>
+#include <condition_variable>
 #include <geometry_msgs/PoseStamped.h>
 #include <mutex>
 #include <ros/ros.h>
@@ -34,6 +35,10 @@ public:
   /// \brief The world's variables at the last /joint_states (mutex held).
   const Eigen::VectorXd& liveState() const { return live_; }
   std::mutex& mutex() { return mutex_; }
+  /// \brief Lockstep (physics held between steps): waits until the live state, the contacts and the objects
+  /// are those of the instant the simulation waits at, at most 2 s of wall time, so what is computed from them
+  /// does not depend on when messages arrive. Paced or not physics: returns at once. Call it without the mutex.
+  void catchUp();
 
   /// \brief A stamped pose in the world. A scene link's pose is taken at the live state (this locks the mutex
   /// for it: call it without holding the mutex); any other frame from tf as it is now, never waiting. Throws
@@ -49,7 +54,7 @@ private:
   /// \brief Physics: who holds what by the fingers' contacts (HeldObjects::squeezedBy).
   void onContacts(const vrrw_physics::Contacts& msg);
   /// \brief 10 Hz: free objects where tf has them; fake mode: who holds what by the closed grippers.
-  void refreshObjects();
+  void refreshObjects(const ros::Time& at = ros::Time(0));
   void publish(const std::vector<HeldEvent>& events);
 
   const vrrw_scene::Scene scene_;
@@ -57,10 +62,14 @@ private:
   std::mutex mutex_;
   vrrw_kinematics::CollisionWorld world_;  ///< PROTECTED BY mutex_
   Eigen::VectorXd live_;                   ///< PROTECTED BY mutex_
+  ros::Time live_stamp_, contacts_stamp_;  ///< PROTECTED BY mutex_: the newest /joint_states, /physics/contacts
+  std::condition_variable arrived_;        ///< with mutex_: a joint state or contacts arrived
   HeldObjects held_;                       ///< PROTECTED BY mutex_ (it changes world_'s attachments)
   tf2_ros::Buffer tf_;                     ///< thread-safe by itself: looked up without mutex_
   tf2_ros::TransformListener listener_;
   ros::Subscriber joint_states_, contacts_;
+  std::mutex step_mutex_;
+  ros::ServiceClient step_;  ///< PROTECTED BY step_mutex_: /physics/step asked where the simulation waits
   ros::Publisher events_;
   ros::Timer objects_timer_;
 };

@@ -161,7 +161,8 @@ bool PhysicsNode::runStepRequest(bool stepped)
     r.finished = true;
     r.idle = idle;
     r.time = world_.time();
-    stopped();
+    if (r.done > 0 || world_.stopped())  // a query (duration 0) changes nothing: the state here is published
+      stopped();
     step_done_.notify_all();
   }
   return r.finished;

@@ -107,6 +107,9 @@ void SkillTrials::goHome()
     }
   }
   vrrw_msgs::Plan plan;
+  // from the state where the simulation waits, not the planner's own joint_states (which may lag it)
+  plan.request.start.name = arm_.armJoints();
+  plan.request.start.position = arm_.joints();
   plan.request.goal_joints.name = arm_.armJoints();
   plan.request.goal_joints.position = home_;
   plan.request.seed = 1;
