@@ -64,6 +64,12 @@ class Refusals(unittest.TestCase):
                          out, VRRW_DISPLAY=display)
         self.refused("demo: VRRW_ROS_PORT: '1e4' is not a port number (11311)", 'demo', '--out', out,
                      VRRW_ROS_PORT='1e4')
+        with socket.socket() as taken:  # a running workspace's master on the port: never joined
+            taken.bind(('127.0.0.1', 0))
+            taken.listen()
+            port = taken.getsockname()[1]
+            self.refused(f'demo: VRRW_ROS_PORT: port {port} is in use (a running workspace?); demo starts its own: '
+                         'unset it or choose a free port', 'demo', '--out', out, VRRW_ROS_PORT=str(port))
         self.assertTrue(os.path.isdir(os.path.join(out, 'frames')))
         with open(os.path.join(out, 'workspace.log')) as f:
             self.assertEqual(f.read(), 'an earlier run\n')
@@ -82,6 +88,16 @@ class Refusals(unittest.TestCase):
         self.refused('vrrw_scene: x$(env HOME): no such scene file or shipped scene (shipped: paper_multibot, '
                      'pick_place_drill)', 'up', 'x$(env HOME)')
         self.refused('vrrw: test: --repeat: 0 is not a whole number >= 1', 'test', '--repeat', '0')
+
+    def test_a_workspace_never_joins_a_running_master(self):
+        with socket.socket() as taken:  # what a running workspace's master holds: its port
+            taken.bind(('127.0.0.1', 0))
+            taken.listen()
+            uri = f'http://localhost:{taken.getsockname()[1]}'
+            for what, args in (('up', ('up', 'pick_place_drill')),
+                               ('record', ('record', 'pick_place_drill', '--out', tempfile.mktemp(suffix='.bag')))):
+                self.refused(f'vrrw: {what}: a ROS master already answers at {uri} (a running workspace?): stop it, '
+                             'or set ROS_MASTER_URI to a free port', *args, ROS_MASTER_URI=uri)
 
     def test_record_refuses_before_recording(self):
         with tempfile.NamedTemporaryFile(suffix='.bag') as existing:

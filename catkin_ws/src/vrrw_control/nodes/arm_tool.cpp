@@ -96,6 +96,7 @@ int run(int argc, char** argv)
 int main(int argc, char** argv)
 {
   ros::init(argc, argv, "vrrw_arm", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+  const vrrw_common::ToolNode node_registration;
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);
   try

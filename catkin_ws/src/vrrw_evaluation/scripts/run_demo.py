@@ -19,6 +19,7 @@ import os
 import re
 import shutil
 import signal
+import socket
 import subprocess
 import sys
 import tempfile
@@ -54,6 +55,15 @@ def runner_path(name='demo_runner'):
 def driver_names(namespace):
     base = '/' + namespace.strip('/') if namespace.strip('/') else ''
     return f'{base}/{DRIVER_ACTION}', f'{base}/{DRIVER_STATES}'
+
+
+def port_free(port):
+    with socket.socket() as s:
+        try:
+            s.bind(('127.0.0.1', port))
+            return True
+        except OSError:
+            return False
 
 
 def check_driver(master_uri, namespace):
@@ -234,6 +244,11 @@ def main():
     port = pinned('VRRW_ROS_PORT', r'(\d{1,5})', 'a port number (11311)')
     if port is not None and not 0 < port < 65536:
         refuse(f'VRRW_ROS_PORT: {port} is not a port number (1-65535)')
+    if port is not None and not port_free(port):
+        # the demo's workspace is its own: a master already there (the user's workspace) would get a second set
+        # of nodes, which replace the running ones by name
+        refuse(f'VRRW_ROS_PORT: port {port} is in use (a running workspace?); demo starts its own: '
+               'unset it or choose a free port')
     trials = args.trials
     robot_master = os.environ.get('ROS_MASTER_URI', '')
     if args.real is not None:

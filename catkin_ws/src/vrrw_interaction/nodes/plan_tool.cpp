@@ -69,6 +69,7 @@ int run(int argc, char** argv)
 int main(int argc, char** argv)
 {
   ros::init(argc, argv, "vrrw_plan", ros::init_options::AnonymousName);
+  const vrrw_common::ToolNode node_registration;
   try
   {
     return run(argc, argv);

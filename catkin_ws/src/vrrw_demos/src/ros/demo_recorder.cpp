@@ -215,7 +215,7 @@ bool DemoRecorder::onStart(vrrw_msgs::DemoStart::Request& request, vrrw_msgs::De
   response.complete_from = status.complete_from;
   response.message = "recording " + joined(status.robots) + " to " + file + ": " +
                      std::to_string(status.topics.size()) + " topics, complete from " +
-                     std::to_string(status.complete_from.toSec()) +
+                     std::to_string(status.complete_from.toSec()) + " s (ROS time: simulated in physics)" +
                      (status.incomplete.empty() ? "" : "; " + status.incomplete);
   return true;
 }

@@ -189,6 +189,7 @@ int runRecord(int argc, char** argv, const std::atomic<bool>& interrupted)
   if (request.check_only)
     return 0;
   ros::init(argc, argv, "demo_record", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+  const vrrw_common::ToolNode node_registration;
   // a workspace coming up (./vrrw record SCENE) is waited for; a running one is checked within 2 s
   if (request.wait <= 2.0 || !waitFor([] { return vrrw_common::masterAnswers(0.5); }, request.wait, interrupted))
     vrrw_common::checkWorkspace();  // says there is none, in the one way

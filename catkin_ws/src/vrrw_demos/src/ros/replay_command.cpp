@@ -398,6 +398,7 @@ int runReplay(int argc, char** argv, const std::atomic<bool>& interrupted)
   ReplayRequest request = parseReplayRequest(argc, argv);
   ReplayInput input = loadInput(request);
   ros::init(argc, argv, "demo_replay", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+  const vrrw_common::ToolNode node_registration;
   const std::string ns = "/" + input.track.robot + "/";
   vrrw_common::checkWorkspace(
       { input.track.robot, { ns + "arm_controller/follow_joint_trajectory", ns + "gripper_controller/gripper_cmd" }, {} });

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include <ros/ros.h>
+#include <vrrw_common/ros/workspace_check.h>
 #include <vrrw_common/options.h>
 #include <vrrw_common/ros/persistent_service.h>
 #include <vrrw_physics/realtime_pacer.h>
@@ -188,6 +189,7 @@ int evaluateCommand(int argc, char** argv)
   WorkspaceProcess workspace(report.scene, rtf, out + "/workspace.log", port);
   int ros_argc = 1;
   ros::init(ros_argc, argv, "skill_evaluate", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+  const vrrw_common::ToolNode node_registration;
   waitForWorkspace(workspace, report.robot, 90.0);
   ros::NodeHandle node;
   ros::AsyncSpinner spinner(2);

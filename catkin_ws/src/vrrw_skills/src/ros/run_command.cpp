@@ -43,6 +43,7 @@ int runCommand(int argc, char** argv)
   const std::string robot = options.text("robot", skill.robot);
   int ros_argc = 1;
   ros::init(ros_argc, argv, "skill_run", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+  const vrrw_common::ToolNode node_registration;
   const std::string ns = "/" + robot + "/";
   vrrw_common::checkWorkspace({ robot,
                                 { ns + "arm_controller/follow_joint_trajectory",

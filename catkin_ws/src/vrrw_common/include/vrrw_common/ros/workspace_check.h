@@ -1,6 +1,7 @@
 #pragma once
 // A tool that needs a running workspace says within seconds what is missing, instead of roscpp's endless
 // "Failed to contact master ... Retrying".
+#include <ros/init.h>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -27,6 +28,16 @@ struct WorkspaceNeeds
 /// there (one look each, no waiting); throws WorkspaceError naming the first thing missing. Call it after
 /// ros::init() and before the first NodeHandle: a NodeHandle without a master retries forever.
 void checkWorkspace(const WorkspaceNeeds& needs = WorkspaceNeeds(), double master_seconds = 2.0);
+
+/// \brief A command-line tool's node, unregistered from the master when main returns (declare it in main right
+/// after ros::init()): without it a tool that returned while its spinner thread ran could stay in `rosnode list`.
+struct ToolNode
+{
+  ToolNode() = default;
+  ToolNode(const ToolNode&) = delete;
+  ToolNode& operator=(const ToolNode&) = delete;
+  ~ToolNode() { ros::shutdown(); }
+};
 
 /// \brief True when the master at ROS_MASTER_URI answers within \a seconds.
 bool masterAnswers(double seconds);
