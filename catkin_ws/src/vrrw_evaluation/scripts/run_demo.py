@@ -58,7 +58,10 @@ def driver_names(namespace):
 
 
 def port_free(port):
+    """Nothing listens on the port (a master that just ended leaves connections in TIME_WAIT: free, as for
+    the next master, which binds with SO_REUSEADDR too)."""
     with socket.socket() as s:
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
         try:
             s.bind(('127.0.0.1', port))
             return True
