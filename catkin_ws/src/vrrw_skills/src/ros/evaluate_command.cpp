@@ -184,8 +184,8 @@ int evaluateCommand(int argc, char** argv)
 
   std::signal(SIGINT, stopTrials);
   std::signal(SIGTERM, stopTrials);
-  std::cout << "skill evaluate: bringing up " << report.scene << " in physics (log " << out << "/workspace.log)"
-            << std::endl;
+  std::cout << "skill evaluate: bringing up " << report.scene << " in physics on its own master, port " << port
+            << " (log " << out << "/workspace.log)" << std::endl;
   WorkspaceProcess workspace(report.scene, rtf, out + "/workspace.log", port);
   int ros_argc = 1;
   ros::init(ros_argc, argv, "skill_evaluate", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
