@@ -1,8 +1,12 @@
 // Node test (rostest, real master, real Bullet physics): a scripted hand drags the free-driven UR5e's
 // wrist 20 cm at 0.2 m/s; releasing with rigid drives freezes it; a ghost plan executes within tolerance;
 // a turning hand turns the wrist; a drill taken by the gripper is attached to the ghost's TCP and planned with.
+// In lockstep a ghost plan starts from the state where the simulation waits.
 #include <actionlib/client/simple_action_client.h>
+#include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
+#include <std_srvs/Empty.h>
+#include <vrrw_physics/Step.h>
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
 #include <vrrw_msgs/GhostExecute.h>
 #include <vrrw_kinematics/top_grasp.h>
@@ -13,6 +17,8 @@
 #include <vrrw_msgs/GhostSupportSurface.h>
 #include <std_srvs/Trigger.h>
 #include <vrrw_physics/SetObjectPose.h>
+
+#include <map>
 
 #include "../bench/hand_drag.h"
 #include "interaction_fixture.h"
@@ -368,6 +374,70 @@ TEST(InteractionPhysics, AHandAtTheTcpDragsTheArmAnywhereInTheWorkspace)
     EXPECT_LT(drag.off_line, 0.03) << what;
     EXPECT_LT(drag.fastest, 0.5) << what;
   }
+}
+
+TEST(InteractionPhysics, InLockstepAGhostPlanStartsFromTheStateWhereTheSimulationWaits)
+{
+  // A lockstep client steps the moving arm and asks for a plan at once: the plan starts from the state at the
+  // stop, never from an older one still on its way to the interaction node (two seeded demos differed so).
+  std::mutex mutex;
+  std::map<ros::Time, std::vector<double>> arm_at;  // PROTECTED BY mutex: the arm's states by stamp
+  ros::Subscriber states = nh->subscribe<sensor_msgs::JointState>(
+      "/ur5e/joint_states", 1000, [&](const sensor_msgs::JointState::ConstPtr& m) {
+        std::lock_guard<std::mutex> lock(mutex);
+        arm_at[m->header.stamp].assign(m->position.begin(), m->position.begin() + 6);
+      });
+  ASSERT_TRUE(eventually([&] { return states.getNumPublishers() > 0; }));
+  vrrw_msgs::GhostPreset preset;
+  preset.request.name = "square_center";
+  ASSERT_TRUE(call("/ur5e/ghost/preset", preset).response.success);
+  call<std_srvs::Empty>("/physics/pause");
+  actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> arm(
+      "/ur5e/arm_controller/follow_joint_trajectory", true);
+  ASSERT_TRUE(arm.waitForServer(ros::Duration(5.0)));
+  vrrw_physics::Step now;
+  now = call("/physics/step", now);  // duration 0: where the simulation waits
+  ASSERT_TRUE(eventually([&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    return arm_at.count(now.response.time) > 0;
+  }));
+  control_msgs::FollowJointTrajectoryGoal goal;  // the shoulder turns 0.6 rad in 3 s: the arm moves at every stop
+  goal.trajectory.joint_names = { "ur5e_shoulder_pan_joint", "ur5e_shoulder_lift_joint", "ur5e_elbow_joint",
+                                  "ur5e_wrist_1_joint", "ur5e_wrist_2_joint", "ur5e_wrist_3_joint" };
+  goal.trajectory.points.resize(1);
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    goal.trajectory.points[0].positions = arm_at[now.response.time];
+  }
+  goal.trajectory.points[0].positions[0] += 0.6;
+  goal.trajectory.points[0].time_from_start = ros::Duration(3.0);
+  arm.sendGoal(goal);
+  int stale = 0;
+  double worst = 0.0;
+  for (int k = 0; k < 20; ++k)
+  {
+    vrrw_physics::Step step;
+    step.request.duration = 0.05;
+    step = call("/physics/step", step);
+    ASSERT_TRUE(step.response.success) << step.response.message;
+    const auto plan = call<vrrw_msgs::GhostPlan>("/ur5e/ghost/plan");
+    ASSERT_TRUE(plan.response.success) << plan.response.message;
+    ASSERT_TRUE(eventually([&] {
+      std::lock_guard<std::mutex> lock(mutex);
+      return arm_at.count(step.response.time) > 0;
+    }));
+    std::lock_guard<std::mutex> lock(mutex);
+    const std::vector<double>& stop = arm_at[step.response.time];
+    const std::vector<double>& start = plan.response.trajectory.points.front().positions;
+    double off = 0.0;
+    for (std::size_t j = 0; j < 6; ++j)
+      off = std::max(off, std::abs(start[j] - stop[j]));
+    stale += off > 1e-9 ? 1 : 0;
+    worst = std::max(worst, off);
+  }
+  arm.cancelGoal();
+  call<std_srvs::Empty>("/physics/unpause");
+  EXPECT_EQ(stale, 0) << "plans that started from an older state; the worst " << worst << " rad off the stop";
 }
 
 int main(int argc, char** argv)
