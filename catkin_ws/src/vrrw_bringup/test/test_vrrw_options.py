@@ -89,15 +89,33 @@ class Refusals(unittest.TestCase):
                      'pick_place_drill)', 'up', 'x$(env HOME)')
         self.refused('vrrw: test: --repeat: 0 is not a whole number >= 1', 'test', '--repeat', '0')
 
-    def test_a_workspace_never_joins_a_running_master(self):
-        with socket.socket() as taken:  # what a running workspace's master holds: its port
-            taken.bind(('127.0.0.1', 0))
-            taken.listen()
-            uri = f'http://localhost:{taken.getsockname()[1]}'
+    def test_a_workspace_never_joins_a_running_one(self):
+        port = free_port()
+        uri = f'http://localhost:{port}'
+        env = dict(os.environ, ROS_MASTER_URI=uri)
+        master = subprocess.Popen(['rosmaster', '--core', '-p', str(port)], env=env, stdout=subprocess.DEVNULL,
+                                  stderr=subprocess.DEVNULL, start_new_session=True)
+        scene = None
+        try:
+            # a running workspace: its /scene node (a stand-in that only registers, on a real master)
+            scene = subprocess.Popen([sys.executable, '-c', 'import rospy; rospy.init_node("scene"); rospy.spin()'],
+                                     env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                     start_new_session=True)
+            deadline = time.monotonic() + 30
+            while time.monotonic() < deadline:
+                listed = subprocess.run(['rosnode', 'list'], env=env, capture_output=True, text=True).stdout
+                if '/scene' in listed.split():
+                    break
+                time.sleep(0.2)
             for what, args in (('up', ('up', 'pick_place_drill')),
                                ('record', ('record', 'pick_place_drill', '--out', tempfile.mktemp(suffix='.bag')))):
-                self.refused(f'vrrw: {what}: a ROS master already answers at {uri} (a running workspace?): stop it, '
-                             'or set ROS_MASTER_URI to a free port', *args, ROS_MASTER_URI=uri)
+                self.refused(f'vrrw: {what}: a workspace already runs at {uri} (its /scene node): stop it, or set '
+                             'ROS_MASTER_URI to a free port', *args, ROS_MASTER_URI=uri)
+        finally:
+            for process in (scene, master):
+                if process:
+                    os.killpg(process.pid, signal.SIGTERM)
+                    process.wait(timeout=10)
 
     def test_record_refuses_before_recording(self):
         with tempfile.NamedTemporaryFile(suffix='.bag') as existing:

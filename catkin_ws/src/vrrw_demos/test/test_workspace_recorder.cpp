@@ -1,14 +1,17 @@
 // `./vrrw up SCENE` runs the demonstration recorder idle beside the workspace: /demos/start is there whenever
-// the workspace is, and records its robot.
+// the workspace is, and records its robot, the goals of short-lived tools included.
 #include <gtest/gtest.h>
 
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <mutex>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <ros/ros.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
 #include <vrrw_common/ros/persistent_service.h>
 #include <vrrw_msgs/DemoStart.h>
 #include <vrrw_msgs/DemoStatus.h>
@@ -66,10 +69,17 @@ TEST(WorkspaceRecorder, UpStartsTheRecorderIdleAndItRecordsTheScenesRobot)
   };
   for (int k = 0; k < 600 && written() <= 50u; ++k)
     ros::WallDuration(0.1).sleep();
+  // two tools, each a new node that sends one goal and ends: both goals in the bag (the first was lost when the
+  // recorder took only topics somebody had published; the second when the tool sent before the recorder connected)
+  EXPECT_EQ(std::system("rosrun vrrw_control vrrw_arm send ur5e --gripper 0.8 --effort 70 > /dev/null"), 0);
+  EXPECT_EQ(std::system("rosrun vrrw_control vrrw_arm send ur5e --gripper 0 > /dev/null"), 0);
   vrrw_msgs::DemoStop stopped;
   ASSERT_TRUE(vrrw_common::services().tryCall("/demos/stop", stopped));
   EXPECT_TRUE(stopped.response.success) << stopped.response.message;
   EXPECT_GT(stopped.response.messages, 50u);  // a second of the fake controller's joint_states at 100 Hz, and tf
+  rosbag::Bag bag(file, rosbag::bagmode::Read);
+  rosbag::View goals(bag, rosbag::TopicQuery("/ur5e/gripper_controller/gripper_cmd/goal"));
+  EXPECT_EQ(goals.size(), 2u);
 
   ::kill(-up, SIGINT);
   int wstatus = 0;

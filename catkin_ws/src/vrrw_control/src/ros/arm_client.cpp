@@ -8,6 +8,7 @@
 #include <ros/ros.h>
 #include <vrrw_common/options.h>
 #include <vrrw_common/ros/persistent_service.h>
+#include <vrrw_common/ros/subscribers.h>
 
 namespace vrrw_control
 {
@@ -38,15 +39,19 @@ std::string number(double value)
   return text;
 }
 
-/// Waits (wall clock: the workspace's clock may be paused) until \a client's server is connected.
+/// Waits (wall clock: the workspace's clock may be paused) until \a client's server is connected, then (at most
+/// 1 s) until every other subscriber of the goal topic is: a recorder that connects after the goal misses it.
 template <class Client>
-void connect(Client& client, const std::string& action, double seconds)
+void connect(Client& client, const std::string& action, double seconds, std::ostream& out)
 {
   for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); !client.isServerConnected();
        ros::WallDuration(0.02).sleep())
     if (ros::WallTime::now() > end || !ros::ok())
       throw ArmClientError(action + ": no controller answers after " + number(seconds) +
                            " s (is the workspace up with this robot? ./vrrw up SCENE)");
+  if (!vrrw_common::waitForSubscribers(action + "/goal", 1.0))
+    out << "note: a subscriber of " << action << "/goal did not connect within 1 s: it will not see this goal"
+        << std::endl;
 }
 }  // namespace
 
@@ -83,7 +88,7 @@ GoalOutcome ArmClient::follow(const trajectory_msgs::JointTrajectory& trajectory
 {
   const std::string action = "/" + robot_ + "/arm_controller/follow_joint_trajectory";
   actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> client(action, true);
-  connect(client, action, limits_.server_wait);
+  connect(client, action, limits_.server_wait, out_);
   control_msgs::FollowJointTrajectoryGoal goal;
   goal.trajectory = trajectory;
   const double duration = trajectory.points.empty() ? 0.0 : trajectory.points.back().time_from_start.toSec();
@@ -112,7 +117,7 @@ GoalOutcome ArmClient::grip(double position, double effort)
 {
   const std::string action = "/" + robot_ + "/gripper_controller/gripper_cmd";
   actionlib::SimpleActionClient<control_msgs::GripperCommandAction> client(action, true);
-  connect(client, action, limits_.server_wait);
+  connect(client, action, limits_.server_wait, out_);
   control_msgs::GripperCommandGoal goal;
   goal.command.position = position;
   goal.command.max_effort = effort;

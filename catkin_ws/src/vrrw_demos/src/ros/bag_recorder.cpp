@@ -200,14 +200,20 @@ void BagRecorder::subscribeNewTopics()
 {
   if (!recording_)
     return;
-  ros::master::V_TopicInfo topics;
-  if (!ros::master::getTopics(topics))
+  // published topics and those only subscribed so far (an action's goal topic before any client sends): a
+  // recorder subscribed beforehand gets the first message of a publisher that waits for its subscribers
+  XmlRpc::XmlRpcValue args, result, state;
+  args[0] = ros::this_node::getName();
+  if (!ros::master::execute("getSystemState", args, result, state, false) || state.getType() != XmlRpc::XmlRpcValue::TypeArray)
     return;
-  for (const ros::master::TopicInfo& info : topics)
+  std::set<std::string> known;
+  for (int side = 0; side < 2; ++side)  // [publishers, subscribers, services]: [[topic, [node, ...]], ...]
+    for (int i = 0; i < state[side].size(); ++i)
+      known.insert(static_cast<std::string>(state[side][i][0]));
+  for (const std::string& topic : known)
   {
-    if (subscribers_.count(info.name) || !wanted(info.name))
+    if (subscribers_.count(topic) || !wanted(topic))
       continue;
-    const std::string topic = info.name;
     ros::SubscribeOptions options;
     options.init<topic_tools::ShapeShifter>(
         topic, kQueueSize, [this, topic](const ros::MessageEvent<topic_tools::ShapeShifter const>& event) {
