@@ -8,6 +8,7 @@ run's place, bad input of `skill learn` and `skill run`, and at least 9 of 10 tr
 import json
 import math
 import os
+import re
 import subprocess
 import time
 import unittest
@@ -126,6 +127,14 @@ class TeachBox(unittest.TestCase):
         rospy.sleep(1.0)
         end = buffer.lookup_transform('world', 'box', rospy.Time(0), rospy.Duration(5.0)).transform.translation
         self.assertLess(math.hypot(end.x - demonstrated[0], end.y - demonstrated[1]), 0.03)
+        # the run says where the box rests, as tf has it, and how far from the taught place
+        said = re.search(r'skill run: box rests at \(([-\d.]+), ([-\d.]+), ([-\d.]+)\) m, ([\d.]+) mm and ([\d.]+) deg '
+                         r'from where the skill leaves it', result.stdout)
+        self.assertIsNotNone(said, result.stdout[-800:])
+        rests = [float(said.group(k)) for k in (1, 2, 3)]
+        self.assertLess(math.dist(rests, [end.x, end.y, end.z]), 0.002)
+        self.assertAlmostEqual(float(said.group(4)), 1000 * math.dist(rests, demonstrated), delta=1.0)
+        self.assertLess(float(said.group(4)), 30.0)
 
     def test_5_evaluates_over_ten_poses(self):
         for process in reversed(self.processes):  # the cores go to evaluate's own workspace

@@ -7,6 +7,7 @@
 #include <vrrw_common/options.h>
 #include <vrrw_common/ros/persistent_service.h>
 #include <vrrw_common/ros/workspace_check.h>
+#include <vrrw_skills/poses.h>
 #include <vrrw_skills/skill_error.h>
 #include <vrrw_skills/skill_yaml.h>
 
@@ -32,6 +33,28 @@ void confirmRealRun(const WorkspaceArm& arm, bool yes)
   std::getline(std::cin, answer);
   if (answer != "yes")
     throw SkillError("--yes: not confirmed; nothing sent");
+}
+
+/// The outcome a person looks for: where the object came to rest, against where the skill leaves it (a skill that
+/// places onto a support leaves it relative to that support: its world place is not judged here).
+void sayWhereItRests(WorkspaceArm& arm, const Skill& skill, const std::string& object)
+{
+  ros::Duration(0.5).sleep();  // (simulated time) the released object comes to rest
+  const auto rests = arm.pose(object);
+  if (!rests)
+    return void(std::printf("skill run: %s is not in tf: where it rests is unknown\n", object.c_str()));
+  const Eigen::Isometry3d end = toIsometry(*rests);
+  const Eigen::Vector3d at = end.translation();
+  std::printf("skill run: %s rests at (%.3f, %.3f, %.3f) m", object.c_str(), at.x(), at.y(), at.z());
+  if (skill.place_on.empty())
+  {
+    const Eigen::Isometry3d taught = toIsometry(skill.object_end);
+    const double angle = Eigen::AngleAxisd(end.rotation() * taught.rotation().transpose()).angle();
+    std::printf(", %.1f mm and %.1f deg from where the skill leaves it", 1000.0 * (at - taught.translation()).norm(),
+                angle * 180.0 / M_PI);
+  }
+  std::printf("\n");
+  std::fflush(stdout);
 }
 }  // namespace
 
@@ -65,6 +88,7 @@ int runCommand(int argc, char** argv)
   {
     const RunReport report = runner.run(print);
     std::printf("skill run: done in %.2f s (planning %.0f ms)\n", report.cycle_seconds, 1000.0 * report.planning_seconds);
+    sayWhereItRests(arm, skill, options.text("object", skill.object));
   }
   catch (const SkillRefusal& e)
   {
