@@ -217,7 +217,8 @@ int runRecord(int argc, char** argv, const std::atomic<bool>& interrupted)
   for (const std::string& topic : call.response.topics)
     topics += (topics.empty() ? "" : ", ") + topic;
   std::cout << "record: " << call.response.message << std::endl;
-  std::cout << "record: topics: " << topics << " (more as they appear); Ctrl-C stops" << std::endl;
+  std::cout << "record: topics: " << topics << " (more as they appear); Ctrl-C or kill " << ::getpid() << " stops"
+            << std::endl;
 
   // Every kReportPeriod: how much is recorded, from the recorder's status; the seconds on this tool's wall clock
   // (its ROS clock may not be the recorder's: `record SCENE` starts before the workspace sets /use_sim_time)
