@@ -8,7 +8,7 @@
 #include <ros/ros.h>
 #include <vrrw_common/options.h>
 #include <vrrw_common/ros/persistent_service.h>
-#include <vrrw_common/ros/subscribers.h>
+#include <vrrw_common/ros/topic_graph.h>
 
 namespace vrrw_control
 {

@@ -10,6 +10,7 @@
 #include <ros/master.h>
 #include <ros/network.h>
 #include <std_msgs/String.h>
+#include <vrrw_common/ros/topic_graph.h>
 #include <vrrw_demos/demo_error.h>
 #include <vrrw_demos/new_file.h>
 #include <xmlrpcpp/XmlRpcClient.h>
@@ -167,21 +168,17 @@ void BagRecorder::start(const std::string& file, std::vector<std::string> robots
 std::vector<std::string> BagRecorder::unreachedTopics() const
 {
   const std::string me = ros::this_node::getName();
-  XmlRpc::XmlRpcValue args, result, state;
-  args[0] = me;
-  if (!ros::master::execute("getSystemState", args, result, state, false) || state.getType() != XmlRpc::XmlRpcValue::TypeArray)
+  const auto graph = vrrw_common::topicGraph();
+  if (!graph)
     return {};
-  XmlRpc::XmlRpcValue& publishers = state[0];  // [[topic, [node, ...]], ...]
   std::map<std::string, std::optional<std::set<std::string>>> reaching;  // node -> topics it publishes to us
   std::vector<std::string> unreached;
-  for (int i = 0; i < publishers.size(); ++i)
+  for (const auto& [topic, nodes] : graph->publishers)
   {
-    const std::string topic = publishers[i][0];
     if (!subscribers_.count(topic))
       continue;
-    for (int k = 0; k < publishers[i][1].size(); ++k)
+    for (const std::string& node : nodes)
     {
-      const std::string node = publishers[i][1][k];
       if (node == me)
         continue;  // our own messages go intraprocess, at once
       if (!reaching.count(node))
@@ -202,14 +199,13 @@ void BagRecorder::subscribeNewTopics()
     return;
   // published topics and those only subscribed so far (an action's goal topic before any client sends): a
   // recorder subscribed beforehand gets the first message of a publisher that waits for its subscribers
-  XmlRpc::XmlRpcValue args, result, state;
-  args[0] = ros::this_node::getName();
-  if (!ros::master::execute("getSystemState", args, result, state, false) || state.getType() != XmlRpc::XmlRpcValue::TypeArray)
+  const auto graph = vrrw_common::topicGraph();
+  if (!graph)
     return;
   std::set<std::string> known;
-  for (int side = 0; side < 2; ++side)  // [publishers, subscribers, services]: [[topic, [node, ...]], ...]
-    for (int i = 0; i < state[side].size(); ++i)
-      known.insert(static_cast<std::string>(state[side][i][0]));
+  for (const auto* side : { &graph->publishers, &graph->subscribers })
+    for (const auto& entry : *side)
+      known.insert(entry.first);
   for (const std::string& topic : known)
   {
     if (subscribers_.count(topic) || !wanted(topic))
