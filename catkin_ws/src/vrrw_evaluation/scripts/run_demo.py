@@ -19,7 +19,6 @@ import os
 import re
 import shutil
 import signal
-import socket
 import subprocess
 import sys
 import tempfile
@@ -55,18 +54,6 @@ def runner_path(name='demo_runner'):
 def driver_names(namespace):
     base = '/' + namespace.strip('/') if namespace.strip('/') else ''
     return f'{base}/{DRIVER_ACTION}', f'{base}/{DRIVER_STATES}'
-
-
-def port_free(port):
-    """Nothing listens on the port (a master that just ended leaves connections in TIME_WAIT: free, as for
-    the next master, which binds with SO_REUSEADDR too)."""
-    with socket.socket() as s:
-        s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
-        try:
-            s.bind(('127.0.0.1', port))
-            return True
-        except OSError:
-            return False
 
 
 def check_driver(master_uri, namespace):
@@ -247,7 +234,7 @@ def main():
     port = pinned('VRRW_ROS_PORT', r'(\d{1,5})', 'a port number (11311)')
     if port is not None and not 0 < port < 65536:
         refuse(f'VRRW_ROS_PORT: {port} is not a port number (1-65535)')
-    if port is not None and not port_free(port):
+    if port is not None and not render_scene.port_free(port):
         # the demo's workspace is its own: a master already there (the user's workspace) would get a second set
         # of nodes, which replace the running ones by name
         refuse(f'VRRW_ROS_PORT: port {port} is in use (a running workspace?); demo starts its own: '

@@ -47,6 +47,18 @@ def free_port():
         return s.getsockname()[1]
 
 
+def port_free(port):
+    """Nothing listens on the port (a master that just ended leaves connections in TIME_WAIT: free, as for
+    the next master, which binds with SO_REUSEADDR too)."""
+    with socket.socket() as s:
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        try:
+            s.bind(('127.0.0.1', port))
+            return True
+        except OSError:
+            return False
+
+
 def free_display():
     for number in range(90, 200):
         if not os.path.exists(f'/tmp/.X{number}-lock') and not os.path.exists(f'/tmp/.X11-unix/X{number}'):

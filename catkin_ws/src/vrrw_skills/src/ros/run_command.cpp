@@ -9,6 +9,7 @@
 #include <vrrw_common/ros/workspace_check.h>
 #include <vrrw_skills/poses.h>
 #include <vrrw_skills/skill_error.h>
+#include <vrrw_skills/trial_outcome.h>
 #include <vrrw_skills/skill_yaml.h>
 
 #include <vrrw_skills/ros/skill_runner.h>
@@ -48,10 +49,9 @@ void sayWhereItRests(WorkspaceArm& arm, const Skill& skill, const std::string& o
   std::printf("skill run: %s rests at (%.3f, %.3f, %.3f) m", object.c_str(), at.x(), at.y(), at.z());
   if (skill.place_on.empty())
   {
-    const Eigen::Isometry3d taught = toIsometry(skill.object_end);
-    const double angle = Eigen::AngleAxisd(end.rotation() * taught.rotation().transpose()).angle();
-    std::printf(", %.1f mm and %.1f deg from where the skill leaves it", 1000.0 * (at - taught.translation()).norm(),
-                angle * 180.0 / M_PI);
+    const Eigen::Isometry3d taught = toIsometry(skill.object_end);  // as skill evaluate judges a place
+    std::printf(", %.1f mm and %.1f deg from where the skill leaves it", 1000.0 * planarDistance(end, taught),
+                yawDifferenceDeg(end, taught));
   }
   std::printf("\n");
   std::fflush(stdout);
