@@ -1,7 +1,7 @@
 // physics_node: steps a vrrw_physics::PhysicsWorld of the scene in ~scene with every robot's controller
 // loaded into it (lockstep), at a real-time factor; wires it to ROS (src/ros/physics_node.h).
-//   publishes  /<robot>/joint_states, /joint_states (all robots), tf world -> <object>, ~contacts at
-//              ~publish_rate; /clock at ~clock_rate; ~errors (std_msgs/String, latched)
+//   publishes  /<robot>/joint_states, /joint_states (all robots), one tf message (the robots' moving joints'
+//              frames unless ~robot_tf is false, world -> <object>), ~contacts at ~publish_rate; /clock at ~clock_rate; ~errors (std_msgs/String, latched)
 //   subscribes ~hand (vrrw_physics/Hand), ~spring_target (vrrw_physics/SpringTarget): applied at header.stamp
 //   services   ~pause ~unpause (std_srvs/Empty), ~step (vrrw_physics/Step), ~reset (std_srvs/Trigger),
 //              ~set_mode, ~set_gains, ~set_spring, ~set_object_pose (vrrw_physics/*)
@@ -48,6 +48,7 @@ vrrw_physics::NodeOptions readNodeOptions(ros::NodeHandle& pnh)
   pnh.param("publish_rate", options.publish_rate, options.publish_rate);
   pnh.param("clock_rate", options.clock_rate, options.clock_rate);
   pnh.param("paused", options.paused, options.paused);
+  pnh.param("robot_tf", options.robot_tf, options.robot_tf);
   pnh.param("controller", options.controller, options.controller);
   if (!(options.publish_rate > 0.0))
     throw std::invalid_argument("~publish_rate: must be > 0 Hz");

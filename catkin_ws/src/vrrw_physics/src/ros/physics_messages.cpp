@@ -20,12 +20,13 @@ Eigen::Vector3d toEigen(const geometry_msgs::Vector3& v)
   return Eigen::Vector3d(v.x, v.y, v.z);
 }
 
-geometry_msgs::TransformStamped toTransform(const Eigen::Isometry3d& pose, const std::string& frame, ros::Time stamp)
+geometry_msgs::TransformStamped toTransform(const Eigen::Isometry3d& pose, const std::string& parent,
+                                            const std::string& child, ros::Time stamp)
 {
   geometry_msgs::TransformStamped t;
   t.header.stamp = stamp;
-  t.header.frame_id = "world";
-  t.child_frame_id = frame;
+  t.header.frame_id = parent;
+  t.child_frame_id = child;
   const Eigen::Quaterniond q(pose.rotation());
   t.transform.translation.x = pose.translation().x();
   t.transform.translation.y = pose.translation().y();

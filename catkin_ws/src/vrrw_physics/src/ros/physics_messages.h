@@ -15,8 +15,9 @@ namespace vrrw_physics
 /// non-finite quaternion.
 Eigen::Isometry3d toEigen(const geometry_msgs::Pose& pose);
 Eigen::Vector3d toEigen(const geometry_msgs::Vector3& vector);
-/// \brief tf of `frame` in "world".
-geometry_msgs::TransformStamped toTransform(const Eigen::Isometry3d& pose, const std::string& frame, ros::Time stamp);
+/// \brief tf of `child` in `parent`.
+geometry_msgs::TransformStamped toTransform(const Eigen::Isometry3d& pose, const std::string& parent,
+                                            const std::string& child, ros::Time stamp);
 /// \brief The spring a set_spring request attaches (max_force 0: OperatorSpring's default).
 OperatorSpring toSpring(const SetSpring::Request& request);
 sensor_msgs::JointState toMsg(const JointStates& states, ros::Time stamp);

@@ -4,6 +4,8 @@
 #include <rosgraph_msgs/Clock.h>
 #include <std_msgs/String.h>
 
+#include <urdf_parser/urdf_parser.h>
+
 #include <cmath>
 
 #include "physics_messages.h"
@@ -46,6 +48,12 @@ PhysicsNode::PhysicsNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const vrrw_s
   // Latched, as /clock: a node that connects while the simulation waits gets where and when it waits.
   for (const std::string& robot : world_.robotNames())
     robot_states_.push_back(nh.advertise<sensor_msgs::JointState>(robot + "/joint_states", 100, true));
+  if (options.robot_tf && !scene.robots.empty())
+  {
+    const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(scene.urdf);  // PhysicsWorld parsed it already
+    for (const std::string& robot : world_.robotNames())
+      robot_frames_.emplace_back(*model, world_.jointStates(robot).name);
+  }
   all_states_ = nh.advertise<sensor_msgs::JointState>("joint_states", 100, true);
   contacts_ = pnh.advertise<Contacts>("contacts", 100);  // a lockstep client's step slice (0.25 s) in a burst, none dropped
   errors_ = pnh.advertise<std_msgs::String>("errors", 10, true);
@@ -215,17 +223,22 @@ void PhysicsNode::publishStates()
   const ros::Time now(world_.time());
   sensor_msgs::JointState all;
   all.header.stamp = now;
+  // one tf message per state: the robots' moving frames (robot_state_publisher's part) and the objects'
+  std::vector<geometry_msgs::TransformStamped> frames;
   const auto robots = world_.robotNames();
   for (std::size_t r = 0; r < robots.size(); ++r)
   {
-    const sensor_msgs::JointState msg = toMsg(world_.jointStates(robots[r]), now);
+    const JointStates states = world_.jointStates(robots[r]);
+    const sensor_msgs::JointState msg = toMsg(states, now);
     robot_states_[r].publish(msg);
     append(msg, all);
+    if (r < robot_frames_.size())
+      for (const JointFrames::Frame& f : robot_frames_[r].at(states.position))
+        frames.push_back(toTransform(f.pose, f.parent, f.child, now));
   }
   all_states_.publish(all);
-  std::vector<geometry_msgs::TransformStamped> frames;
   for (const std::string& object : world_.objectNames())
-    frames.push_back(toTransform(world_.objectPose(object), object, now));
+    frames.push_back(toTransform(world_.objectPose(object), "world", object, now));
   if (!frames.empty())
     tf_.sendTransform(frames);
   contacts_.publish(toMsg(world_.contacts(), now));

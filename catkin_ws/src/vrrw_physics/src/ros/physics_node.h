@@ -3,6 +3,7 @@
 // at a real-time factor, with its topics and services.
 #include <vrrw_physics/Hand.h>
 #include <vrrw_physics/SpringTarget.h>
+#include <vrrw_physics/joint_frames.h>
 #include <vrrw_physics/Step.h>
 #include <vrrw_physics/physics_world.h>
 #include <vrrw_physics/realtime_pacer.h>
@@ -31,6 +32,8 @@ struct NodeOptions
   double publish_rate = 50.0;  ///< Hz of simulated time: joint_states, object tf and contacts (a viewer's rate)
   double clock_rate = 100.0;   ///< Hz of simulated time of /clock (and whenever the simulation stops); 0: each step
   bool paused = false;         ///< start paused (a client steps it)
+  bool robot_tf = true;        ///< send the robots' moving frames on /tf with every state (robot_state_publisher
+                               ///< then only sends /tf_static)
   std::string controller;      ///< pluginlib class of every robot's controller; empty: none
 };
 
@@ -91,6 +94,7 @@ private:
   std::multimap<double, std::function<void()>> due_;
   std::uint64_t states_at_ = ~0ull, clock_at_ = ~0ull;  ///< step counts last published (once per step)  ///< stamped operator input by simulated time
   std::vector<ros::Publisher> robot_states_;
+  std::vector<JointFrames> robot_frames_;  ///< per robot, beside robot_states_; empty without robot_tf
   std::vector<ros::Subscriber> subscribers_;
   ros::Publisher all_states_, contacts_, errors_, clock_;
   std::vector<ros::ServiceServer> services_;
