@@ -2,7 +2,7 @@
 // real time (rtf 1), each with its controller inside in lockstep, get the same commands at the same simulated
 // times (goals stamped while paused, the simulation stepped until the controllers are idle); every joint state
 // they publish is bit-identical.
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <gtest/gtest.h>
 #include <set>
@@ -10,8 +10,8 @@
 #include "lockstep_client.h"
 
 using namespace vrrw_control_test;
-using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;
-using GripperClient = actionlib::SimpleActionClient<control_msgs::GripperCommandAction>;
+using ArmClient = vrrw_common::ActionClient<control_msgs::FollowJointTrajectoryAction>;
+using GripperClient = vrrw_common::ActionClient<control_msgs::GripperCommandAction>;
 using State = actionlib::SimpleClientGoalState;
 
 namespace
@@ -21,8 +21,8 @@ struct Cell
 {
   Cell(ros::NodeHandle& nh, const std::string& ns)
     : sim(ns + "/physics")
-    , arm(ns + "/ur5e/arm_controller/follow_joint_trajectory", true)
-    , gripper(ns + "/ur5e/gripper_controller/gripper_cmd", true)
+    , arm(ns + "/ur5e/arm_controller/follow_joint_trajectory")
+    , gripper(ns + "/ur5e/gripper_controller/gripper_cmd")
     , states(nh, ns + "/ur5e/joint_states")
   {
   }

@@ -5,7 +5,7 @@
 // goal ends within the controller's goal tolerance (0.01 rad), and the arm ends as close to the carry's goal
 // as when the gripper closed on nothing. On main before issue 22 this carry ended 7.9 mrad off (the issue's
 // run at rtf 1 aborted: wrist_1 0.0117 rad off, beyond the 0.01 rad goal tolerance).
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <gtest/gtest.h>
 #include <tf2_eigen/tf2_eigen.h>
@@ -20,8 +20,8 @@
 #include "lockstep_client.h"
 
 using namespace vrrw_control_test;
-using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;
-using GripperClient = actionlib::SimpleActionClient<control_msgs::GripperCommandAction>;
+using ArmClient = vrrw_common::ActionClient<control_msgs::FollowJointTrajectoryAction>;
+using GripperClient = vrrw_common::ActionClient<control_msgs::GripperCommandAction>;
 
 namespace
 {
@@ -97,8 +97,8 @@ class Carry
 {
 public:
   explicit Carry(ros::NodeHandle& nh)
-    : arm_("/ur5e/arm_controller/follow_joint_trajectory", true)
-    , gripper_("/ur5e/gripper_controller/gripper_cmd", true)
+    : arm_("/ur5e/arm_controller/follow_joint_trajectory")
+    , gripper_("/ur5e/gripper_controller/gripper_cmd")
     , states_(nh, "/ur5e/joint_states")
   {
   }

@@ -2,7 +2,7 @@
 // (lockstep; the test steps simulated time). The gripper closes on a fixed block between its fingers and
 // reports stalled; GripperCommand max_effort bounds the pad force measured by the physics node's contacts;
 // opening reaches its goal.
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <gtest/gtest.h>
 #include <mutex>
@@ -11,7 +11,7 @@
 
 #include "lockstep_client.h"
 
-using GripperClient = actionlib::SimpleActionClient<control_msgs::GripperCommandAction>;
+using GripperClient = vrrw_common::ActionClient<control_msgs::GripperCommandAction>;
 using State = actionlib::SimpleClientGoalState;
 
 namespace
@@ -79,7 +79,7 @@ TEST(PhysicsGrasp, ClosingOnABlockStallsWithThePadForceOfMaxEffort)
 {
   ros::NodeHandle nh;
   PadForces pads(nh);
-  GripperClient gripper("/ur5e/gripper_controller/gripper_cmd", true);
+  GripperClient gripper("/ur5e/gripper_controller/gripper_cmd");
   ASSERT_TRUE(gripper.waitForServer(ros::Duration(20.0)));
   vrrw_control_test::Lockstep sim;
   ASSERT_TRUE(sim.waitForPhysics());

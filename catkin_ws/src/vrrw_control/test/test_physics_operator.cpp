@@ -2,7 +2,7 @@
 // physics mode, the controller inside the physics node in lockstep and the test stepping simulated time.
 // Free-drive: an operator spring pushes the compliant UR5e; after free-drive the TCP holds within 1 mm for
 // 5 s. Pausing: a goal stands still with simulated time and goes on when it runs again.
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <gtest/gtest.h>
 #include <std_msgs/Bool.h>
 #include <tf2_ros/transform_listener.h>
@@ -13,7 +13,7 @@
 #include "lockstep_client.h"
 
 using namespace vrrw_control_test;
-using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;
+using ArmClient = vrrw_common::ActionClient<control_msgs::FollowJointTrajectoryAction>;
 using State = actionlib::SimpleClientGoalState;
 
 namespace
@@ -21,7 +21,7 @@ namespace
 struct Cell
 {
   explicit Cell(ros::NodeHandle& nh)
-    : arm("/ur5e/arm_controller/follow_joint_trajectory", true)
+    : arm("/ur5e/arm_controller/follow_joint_trajectory")
     , states(nh, "/ur5e/joint_states")
     , free_drive(nh.advertise<std_msgs::Bool>("/ur5e/free_drive_active", 1, true))
     , listener(tf)

@@ -2,7 +2,7 @@
 // physics node in lockstep and the test stepping simulated time, so when a goal ends is exact. The UR5e of
 // pick_place_drill runs compliant (no stiffness: its position drifts behind the motion) or nearly free to break
 // its tolerances; rigid, a motion succeeds.
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <gtest/gtest.h>
 #include <vrrw_physics/SetGains.h>
 #include <vrrw_physics/SetMode.h>
@@ -10,7 +10,7 @@
 #include "lockstep_client.h"
 
 using namespace vrrw_control_test;
-using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;
+using ArmClient = vrrw_common::ActionClient<control_msgs::FollowJointTrajectoryAction>;
 using Result = control_msgs::FollowJointTrajectoryResult;
 using State = actionlib::SimpleClientGoalState;
 
@@ -128,7 +128,7 @@ int main(int argc, char** argv)
   ros::NodeHandle nh;
   ros::AsyncSpinner spinner(2);
   spinner.start();
-  ArmClient a("/ur5e/arm_controller/follow_joint_trajectory", true);
+  ArmClient a("/ur5e/arm_controller/follow_joint_trajectory");
   JointStateLog s(nh, "/ur5e/joint_states");
   Lockstep l;
   arm = &a;

@@ -3,7 +3,7 @@
 // once, stamped at a simulated time while the simulation waits, and is tracked within 6e-4 rad with rigid
 // gains, measured at every joint_states sample of the physics node against the interpolant at its stamp.
 #include <vrrw_trajectory/msg_conversions.h>
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include <vrrw_control/trajectory_interpolator.h>
 
 using namespace vrrw_control_test;
-using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;
+using ArmClient = vrrw_common::ActionClient<control_msgs::FollowJointTrajectoryAction>;
 using State = actionlib::SimpleClientGoalState;
 
 namespace
@@ -22,7 +22,7 @@ struct Arm
 {
   Arm(ros::NodeHandle& nh, const std::string& name)
     : name(name)
-    , client("/" + name + "/arm_controller/follow_joint_trajectory", true)
+    , client("/" + name + "/arm_controller/follow_joint_trajectory")
     , states(nh, "/" + name + "/joint_states")
   {
   }

@@ -8,7 +8,7 @@
 #include <map>
 #include <mutex>
 
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <Eigen/Geometry>
@@ -26,8 +26,8 @@
 
 namespace
 {
-using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;
-using GripperClient = actionlib::SimpleActionClient<control_msgs::GripperCommandAction>;
+using ArmClient = vrrw_common::ActionClient<control_msgs::FollowJointTrajectoryAction>;
+using GripperClient = vrrw_common::ActionClient<control_msgs::GripperCommandAction>;
 
 Eigen::Isometry3d toEigen(const geometry_msgs::Transform& t)
 {
@@ -165,8 +165,8 @@ TEST(ReplayPhysics, PickAndPlaceEndsWhereTheDemonstrationLeftTheBlock)
   ros::NodeHandle nh;
   BlockPose block(nh);
   JointStateLog states(nh);
-  ArmClient arm("/ur5e/arm_controller/follow_joint_trajectory", true);
-  GripperClient hand("/ur5e/gripper_controller/gripper_cmd", true);
+  ArmClient arm("/ur5e/arm_controller/follow_joint_trajectory");
+  GripperClient hand("/ur5e/gripper_controller/gripper_cmd");
   ASSERT_TRUE(arm.waitForServer(ros::Duration(30.0)));
   ASSERT_TRUE(hand.waitForServer(ros::Duration(30.0)));
   ASSERT_TRUE(ros::service::waitForService("/demos/start", ros::Duration(30.0)));

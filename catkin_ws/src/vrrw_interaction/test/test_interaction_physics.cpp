@@ -2,7 +2,7 @@
 // wrist 20 cm at 0.2 m/s; releasing with rigid drives freezes it; a ghost plan executes within tolerance;
 // a turning hand turns the wrist; a drill taken by the gripper is attached to the ghost's TCP and planned with.
 // In lockstep a ghost plan starts from the state where the simulation waits.
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <std_srvs/Empty.h>
@@ -192,7 +192,7 @@ TEST(InteractionPhysics, AHeldDrillIsAttachedToTheGhostAndPlannedWith)
       tf2::transformToEigen(tf->lookupTransform("world", "drill", ros::Time(0), ros::Duration(2.0)));
   ASSERT_EQ(moveTo(tcpOverDrill(drill, 0.12)), "");
   ASSERT_EQ(moveTo(tcpOverDrill(drill, 0.0)), "");
-  actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper("/ur5e/gripper_controller/gripper_cmd", true);
+  vrrw_common::ActionClient<control_msgs::GripperCommandAction> gripper("/ur5e/gripper_controller/gripper_cmd");
   ASSERT_TRUE(gripper.waitForServer(ros::Duration(5.0)));
   control_msgs::GripperCommandGoal close;
   close.command.position = 0.8, close.command.max_effort = 70.0;  // past the housing: the grip stalls on it
@@ -355,7 +355,7 @@ TEST(InteractionPhysics, AHandAtTheTcpDragsTheArmAnywhereInTheWorkspace)
     { "elbow nearly straight, reaching out", { 0.9, -0.9, 0.05, -1.2, -1.57, 0.0 } },
     { "folded low in front", { -0.6, -1.3, 1.6, -1.9, -1.57, 0.5 } },
   };
-  actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper("/ur5e/gripper_controller/gripper_cmd", true);
+  vrrw_common::ActionClient<control_msgs::GripperCommandAction> gripper("/ur5e/gripper_controller/gripper_cmd");
   ASSERT_TRUE(gripper.waitForServer(ros::Duration(5.0)));
   gripper.sendGoal(control_msgs::GripperCommandGoal());  // open: nothing held from an earlier test
   gripper.waitForResult(ros::Duration(3.0));
@@ -392,8 +392,8 @@ TEST(InteractionPhysics, InLockstepAGhostPlanStartsFromTheStateWhereTheSimulatio
   preset.request.name = "square_center";
   ASSERT_TRUE(call("/ur5e/ghost/preset", preset).response.success);
   call<std_srvs::Empty>("/physics/pause");
-  actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> arm(
-      "/ur5e/arm_controller/follow_joint_trajectory", true);
+  vrrw_common::ActionClient<control_msgs::FollowJointTrajectoryAction> arm(
+      "/ur5e/arm_controller/follow_joint_trajectory");
   ASSERT_TRUE(arm.waitForServer(ros::Duration(5.0)));
   vrrw_physics::Step now;
   now = call("/physics/step", now);  // duration 0: where the simulation waits

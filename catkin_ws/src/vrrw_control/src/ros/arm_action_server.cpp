@@ -16,15 +16,16 @@ int codeOf(Validation::Error e)
 const char* const kFreeDrive = "free-drive active";
 }  // namespace
 
-// actionlib reads its topics' queue sizes from these parameters when the server or client is made: a burst of
-// goals beyond the default queue would be dropped unanswered.
-ros::NodeHandle sizedActionQueues(ros::NodeHandle& nh, const std::string& name, int size)
+// actionlib reads these parameters when the server or client is made.
+ros::NodeHandle actionParameters(ros::NodeHandle& nh, const std::string& name,
+                                 const ArmActionServer::Options& options)
 {
   for (const char* side : { "server", "client" })
   {
-    nh.setParam(name + "/actionlib_" + side + "_sub_queue_size", size);
-    nh.setParam(name + "/actionlib_" + side + "_pub_queue_size", size);
+    nh.setParam(name + "/actionlib_" + side + "_sub_queue_size", options.queue_size);
+    nh.setParam(name + "/actionlib_" + side + "_pub_queue_size", options.queue_size);
   }
+  nh.setParam(name + "/actionlib_status_frequency", 0.0);
   return nh;
 }
 
@@ -36,9 +37,9 @@ ArmActionServer::ArmActionServer(ros::NodeHandle& nh, ArmController& arm, const 
   , origin_(options_.clock_origin)
   , relay_(std::move(relay))
   , real_(real)
-  , server_(sizedActionQueues(nh, "arm_controller/follow_joint_trajectory", options_.queue_size),
-            "arm_controller/follow_joint_trajectory", [this](GoalHandle gh) { onGoal(gh); },
-            [this](GoalHandle gh) { onCancel(gh); }, false)
+  , server_(actionParameters(nh, "arm_controller/follow_joint_trajectory", options_),
+            "arm_controller/follow_joint_trajectory", options_.status_period, [this](GoalHandle gh) { onGoal(gh); },
+            [this](GoalHandle gh) { onCancel(gh); })
   , name_(nh.getNamespace() + "/arm_controller")
 {
   if (relay_)
@@ -261,6 +262,7 @@ void ArmActionServer::update(const ros::Time& now)
   if (real_ && real_->ready() && (phase_ == Phase::Idle || phase_ == Phase::Relaying))
     arm_.adopt(realArm());
   const ArmController::Cycle c = arm_.update(toTime(now));
+  server_.heartbeat(now);
   // The phases: Simulating (fake, physics, and real mode's preview) ends in a result, or in real mode waits for
   // the confirmation; Relaying ends by the driver's result (onConfirm's callbacks) or its disconnection.
   if (phase_ == Phase::Simulating)

@@ -1,6 +1,6 @@
 #include "vrrw_control/ros/arm_client.h"
 
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <cmath>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
@@ -87,7 +87,7 @@ trajectory_msgs::JointTrajectory ArmClient::plan(const vrrw_msgs::Plan::Request&
 GoalOutcome ArmClient::follow(const trajectory_msgs::JointTrajectory& trajectory)
 {
   const std::string action = "/" + robot_ + "/arm_controller/follow_joint_trajectory";
-  actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> client(action, true);
+  vrrw_common::ActionClient<control_msgs::FollowJointTrajectoryAction> client(action);
   connect(client, action, limits_.server_wait, out_);
   control_msgs::FollowJointTrajectoryGoal goal;
   goal.trajectory = trajectory;
@@ -116,7 +116,7 @@ GoalOutcome ArmClient::follow(const trajectory_msgs::JointTrajectory& trajectory
 GoalOutcome ArmClient::grip(double position, double effort)
 {
   const std::string action = "/" + robot_ + "/gripper_controller/gripper_cmd";
-  actionlib::SimpleActionClient<control_msgs::GripperCommandAction> client(action, true);
+  vrrw_common::ActionClient<control_msgs::GripperCommandAction> client(action);
   connect(client, action, limits_.server_wait, out_);
   control_msgs::GripperCommandGoal goal;
   goal.command.position = position;

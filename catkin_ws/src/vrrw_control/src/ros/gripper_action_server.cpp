@@ -11,8 +11,8 @@ GripperActionServer::GripperActionServer(ros::NodeHandle& nh, GripperController&
   , origin_(options.clock_origin)
   , feedback_period_(options.feedback_period)
   , allow_stalling_(allow_stalling)
-  , server_(sizedActionQueues(nh, "gripper_controller/gripper_cmd", options.queue_size), "gripper_controller/gripper_cmd",
-            [this](GoalHandle gh) { onGoal(gh); }, [this](GoalHandle gh) { onCancel(gh); }, false)
+  , server_(actionParameters(nh, "gripper_controller/gripper_cmd", options), "gripper_controller/gripper_cmd",
+            options.status_period, [this](GoalHandle gh) { onGoal(gh); }, [this](GoalHandle gh) { onCancel(gh); })
 {
   server_.start();
 }
@@ -59,6 +59,7 @@ void GripperActionServer::suspend(const std::string& why)
 void GripperActionServer::update(const ros::Time& now)
 {
   const auto c = gripper_.update(toTime(now));
+  server_.heartbeat(now);
   if (!has_active_)
     return;
   // feedback at the period asked for (1 ns of slack for the clock's rounding), and always with the last cycle

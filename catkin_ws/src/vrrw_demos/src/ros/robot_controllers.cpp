@@ -36,8 +36,8 @@ RobotControllers::RobotControllers(const std::string& robot, bool real, const st
   : ns_("/" + robot + "/")
   , real_(real)
   , interrupted_(interrupted)
-  , arm_(ns_ + "arm_controller/follow_joint_trajectory", true)
-  , gripper_(ns_ + "gripper_controller/gripper_cmd", true)
+  , arm_(ns_ + "arm_controller/follow_joint_trajectory")
+  , gripper_(ns_ + "gripper_controller/gripper_cmd")
   , services_(std::make_unique<vrrw_common::PersistentServices>())
 {
   states_ = ros::NodeHandle().subscribe<sensor_msgs::JointState>(

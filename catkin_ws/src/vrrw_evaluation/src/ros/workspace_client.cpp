@@ -52,8 +52,8 @@ WorkspaceClient::WorkspaceClient(ros::NodeHandle& node, const vrrw_scene::Robot&
   , sim_(sim)
   , tf_buffer_(ros::Duration(600.0))  // a run's track is looked up in simulated time that lies up to minutes back
   , tf_listener_(tf_buffer_)
-  , arm_("/" + robot.name + "/arm_controller/follow_joint_trajectory", true)
-  , gripper_("/" + robot.name + "/gripper_controller/gripper_cmd", true)
+  , arm_("/" + robot.name + "/arm_controller/follow_joint_trajectory")
+  , gripper_("/" + robot.name + "/gripper_controller/gripper_cmd")
   , ik_("/" + robot.name + "/compute_ik")
   , plan_("/" + robot.name + "/plan")
 {

@@ -4,7 +4,7 @@
 // itself (lockstep): it acts while the simulation waits and reads the state exactly where it waits, so a run
 // with the same seed moves the same way at any real-time factor. Not part of the ROS-free core.
 #include <Eigen/Geometry>
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <condition_variable>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
@@ -127,8 +127,8 @@ private:
   int stop_observer_ = -1;  ///< catchUp() among sim_'s stop observers
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
-  actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> arm_;
-  actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper_;
+  vrrw_common::ActionClient<control_msgs::FollowJointTrajectoryAction> arm_;
+  vrrw_common::ActionClient<control_msgs::GripperCommandAction> gripper_;
   std::string ik_, plan_;  ///< /<robot>/compute_ik, /<robot>/plan
   vrrw_common::PersistentServices links_;
   bool demos_recording_ = false;  ///< a bag is being recorded by vrrw_demos (main thread only)

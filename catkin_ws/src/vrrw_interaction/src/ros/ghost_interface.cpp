@@ -31,7 +31,7 @@ GhostInterface::GhostInterface(WorldView& view, const vrrw_scene::Robot& robot, 
            arm_.jointValues(view.liveState()))
   , gripper_(gripperRange(view.world().model(), robot))
   , arm_action_(robot.name)
-  , gripper_action_("/" + robot.name + "/gripper_controller/gripper_cmd", true)
+  , gripper_action_("/" + robot.name + "/gripper_controller/gripper_cmd")
 {
   ros::NodeHandle nh("/" + robot_ + "/ghost");
   joint_states_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10, true);

@@ -1,5 +1,5 @@
 #pragma once
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <functional>
 #include <optional>
@@ -82,6 +82,6 @@ private:
   std::vector<ros::ServiceServer> services_;
   ros::Timer keepalive_;
   ArmExecution arm_action_;
-  actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper_action_;
+  vrrw_common::ActionClient<control_msgs::GripperCommandAction> gripper_action_;
 };
 }  // namespace vrrw_interaction

@@ -47,8 +47,8 @@ WorkspaceArm::WorkspaceArm(ros::NodeHandle& node, const std::string& robot, vrrw
   , services_(services)
   , tf_buffer_(ros::Duration(60.0))
   , tf_listener_(tf_buffer_)
-  , arm_("/" + robot + "/arm_controller/follow_joint_trajectory", true)
-  , gripper_("/" + robot + "/gripper_controller/gripper_cmd", true)
+  , arm_("/" + robot + "/arm_controller/follow_joint_trajectory")
+  , gripper_("/" + robot + "/gripper_controller/gripper_cmd")
 {
   const std::string params = "/scene/robots/" + robot + "/";
   if (!node.getParam(params + "arm_joints", arm_joints_) || arm_joints_.empty())

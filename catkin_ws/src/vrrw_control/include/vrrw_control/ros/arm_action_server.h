@@ -1,11 +1,11 @@
 #pragma once
-#include <actionlib/server/action_server.h>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <functional>
 #include <memory>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 #include <vrrw_control/arm_controller.h>
+#include <vrrw_control/ros/clocked_action_server.h>
 #include <vrrw_control/ros/real_driver_relay.h>
 
 namespace vrrw_control
@@ -29,6 +29,7 @@ public:
     double confirm_timeout = 120.0;  ///< real mode: s to wait for the confirmation
     int queue_size = 10000;          ///< goals (and results) actionlib may queue: a burst's size
     double feedback_period = 0.0;    ///< s between feedback messages of a goal; 0: every control cycle
+    double status_period = 0.2;      ///< s of controller time between status heartbeats (actionlib's 5 Hz)
   };
 
   /// \brief `relay` non-null selects real mode. `real` (optional, real mode) measures the real arm:
@@ -72,7 +73,7 @@ private:
   ros::Time origin_;
   std::unique_ptr<RealDriverRelay> relay_;
   const RobotHardware* real_;
-  actionlib::ActionServer<Action> server_;
+  ClockedActionServer<Action> server_;
   ros::ServiceServer confirm_;
   GoalHandle active_;
   Phase phase_ = Phase::Idle;
@@ -85,9 +86,11 @@ private:
   bool free_drive_ = false;
 };
 
-/// \brief Sets actionlib's queue sizes of the action `name` (relative to `nh`) to `size`, before its
-/// server is built: actionlib's defaults (server 50, C++ client 10 goals) drop goals and results of a
-/// larger burst, which leaves their clients waiting forever. The client sizes are read from the
+/// \brief Sets actionlib's parameters of the action `name` (relative to `nh`) before its server is built: no
+/// status timer (ClockedActionServer sends the heartbeat), queue sizes `options.queue_size` (actionlib's
+/// defaults, server 50 and C++ client 10 goals, drop goals and results of a larger burst, which leaves their
+/// clients waiting forever). The client sizes are read from the
 /// action's namespace by every roscpp ActionClient of it created afterwards.
-ros::NodeHandle sizedActionQueues(ros::NodeHandle& nh, const std::string& name, int size);
+ros::NodeHandle actionParameters(ros::NodeHandle& nh, const std::string& name,
+                                 const ArmActionServer::Options& options);
 }  // namespace vrrw_control

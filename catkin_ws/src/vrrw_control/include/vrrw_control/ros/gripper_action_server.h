@@ -1,5 +1,4 @@
 #pragma once
-#include <actionlib/server/action_server.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <ros/ros.h>
 #include <vrrw_control/ros/arm_action_server.h>
@@ -37,7 +36,7 @@ private:
   double feedback_period_;
   ros::Time last_feedback_;  ///< of the active goal
   bool allow_stalling_;
-  actionlib::ActionServer<Action> server_;
+  ClockedActionServer<Action> server_;
   GoalHandle active_;
   bool has_active_ = false;
 };

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include <actionlib/client/simple_action_client.h>
+#include <vrrw_common/ros/action_client.h>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <ros/ros.h>
@@ -117,8 +117,8 @@ public:
   const std::string& ns() const { return ns_; }
 
 private:
-  using ArmClient = actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction>;
-  using GripperClient = actionlib::SimpleActionClient<control_msgs::GripperCommandAction>;
+  using ArmClient = vrrw_common::ActionClient<control_msgs::FollowJointTrajectoryAction>;
+  using GripperClient = vrrw_common::ActionClient<control_msgs::GripperCommandAction>;
 
   /// One confirmation attempt; true once the controller relayed the goal to the real driver.
   bool tryConfirm();

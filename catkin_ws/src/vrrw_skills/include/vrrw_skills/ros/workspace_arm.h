@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include <actionlib/client/simple_action_client.h>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
 #include <ros/ros.h>
+#include <vrrw_common/ros/action_client.h>
 #include <sensor_msgs/JointState.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -105,8 +105,8 @@ private:
   std::vector<std::string> watched_;             ///< frames catchUp() waits for beside the TCP
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
-  actionlib::SimpleActionClient<control_msgs::FollowJointTrajectoryAction> arm_;
-  actionlib::SimpleActionClient<control_msgs::GripperCommandAction> gripper_;
+  vrrw_common::ActionClient<control_msgs::FollowJointTrajectoryAction> arm_;
+  vrrw_common::ActionClient<control_msgs::GripperCommandAction> gripper_;
 
   mutable std::mutex mutex_;          ///< protects latest_, speed_ and stamp_
   std::condition_variable state_arrived_;  ///< a joint state arrived (catchUp waits for it)
