@@ -1,7 +1,8 @@
 // Node test (rostest, real master, real Bullet physics): a scripted hand drags the free-driven UR5e's
 // wrist 20 cm at 0.2 m/s; releasing with rigid drives freezes it; a ghost plan executes within tolerance;
 // a turning hand turns the wrist; a drill taken by the gripper is attached to the ghost's TCP and planned with.
-// In lockstep a ghost plan starts from the state where the simulation waits.
+// In lockstep a ghost plan starts from the state where the simulation waits, and the ghost is sent at the
+// simulation's instants: the same messages at the same stamps however fast the steps run.
 #include <actionlib/client/simple_action_client.h>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
@@ -16,9 +17,12 @@
 #include <vrrw_msgs/GhostSetPose.h>
 #include <vrrw_msgs/GhostSupportSurface.h>
 #include <std_srvs/Trigger.h>
+#include <tf2_msgs/TFMessage.h>
 #include <vrrw_physics/SetObjectPose.h>
 
+#include <limits>
 #include <map>
+#include <set>
 
 #include "../bench/hand_drag.h"
 #include "interaction_fixture.h"
@@ -438,6 +442,122 @@ TEST(InteractionPhysics, InLockstepAGhostPlanStartsFromTheStateWhereTheSimulatio
   arm.cancelGoal();
   call<std_srvs::Empty>("/physics/unpause");
   EXPECT_EQ(stale, 0) << "plans that started from an older state; the worst " << worst << " rad off the stop";
+}
+
+namespace
+{
+/// The stamps of what the ghost sends (/ur5e/ghost/joint_states, ghost/<link> frames on /tf) and of the states
+/// the simulation publishes (/joint_states).
+class GhostSends
+{
+public:
+  GhostSends()
+    : ghost_(nh->subscribe<sensor_msgs::JointState>("/ur5e/ghost/joint_states", 1000,
+                                                    [this](const sensor_msgs::JointState::ConstPtr& m) { add(ghost_states_, m->header.stamp); }))
+    , tf_(nh->subscribe<tf2_msgs::TFMessage>("/tf", 1000, [this](const tf2_msgs::TFMessage::ConstPtr& m) {
+      if (!m->transforms.empty() && m->transforms[0].child_frame_id.rfind("ghost/", 0) == 0)
+        add(frames_, m->transforms[0].header.stamp);
+    }))
+    , states_(nh->subscribe<sensor_msgs::JointState>("/joint_states", 1000,
+                                                     [this](const sensor_msgs::JointState::ConstPtr& m) { add(states_at_, m->header.stamp); }))
+  {
+  }
+  /// Seconds after `from` of each ghost state (or frames) sent at or after it.
+  std::vector<double> ghostStates(const ros::Time& from) const { return after(ghost_states_, from); }
+  std::vector<double> frames(const ros::Time& from) const { return after(frames_, from); }
+  bool stateAt(const ros::Time& t) const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return std::find(states_at_.begin(), states_at_.end(), t) != states_at_.end();
+  }
+  /// Steps the paused simulation `seconds` as fast as the cores allow and waits for the state where it stops.
+  ros::Time step(double seconds) const
+  {
+    vrrw_physics::Step step;
+    step.request.duration = seconds;
+    step.request.rtf = std::numeric_limits<double>::infinity();
+    step = call("/physics/step", step);
+    EXPECT_TRUE(step.response.success) << step.response.message;
+    EXPECT_TRUE(eventually([&] { return stateAt(step.response.time); }));
+    return step.response.time;
+  }
+
+private:
+  void add(std::vector<ros::Time>& to, const ros::Time& t)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    to.push_back(t);
+  }
+  std::vector<double> after(const std::vector<ros::Time>& sent, const ros::Time& from) const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<double> out;
+    for (const ros::Time& t : sent)
+      if (t >= from)
+        out.push_back((t - from).toSec());
+    return out;
+  }
+
+  mutable std::mutex mutex_;
+  std::vector<ros::Time> ghost_states_, frames_, states_at_;  ///< PROTECTED BY mutex_
+  ros::Subscriber ghost_, tf_, states_;
+};
+
+/// One sequence with the simulation paused: a preset, 0.25 s, another preset (at t), 3.25 s in 13 slices, a
+/// preset, 0.5 s in two slices, a preset (the fence: it arrives after everything sent before it). The ghost
+/// states and frames sent from t on, in s after t.
+std::pair<std::vector<double>, std::vector<double>> lockstepSequence(const GhostSends& sends)
+{
+  const auto preset = [](const std::string& name) {
+    vrrw_msgs::GhostPreset srv;
+    srv.request.name = name;
+    EXPECT_TRUE(call("/ur5e/ghost/preset", srv).response.success) << name;
+  };
+  preset("home");
+  const ros::Time t = sends.step(0.25);
+  preset("square_center");  // a change at t: sent at once (the frames were last sent 0.25 or 0.24 s before)
+  EXPECT_TRUE(eventually([&] { return sends.ghostStates(t).size() == 1 && sends.frames(t).size() == 1; }))
+      << sends.ghostStates(t).size() << " ghost states, " << sends.frames(t).size() << " frames at once";
+  for (int k = 0; k < 13; ++k)  // the ghost and the arm still for 3.25 s: the keepalives at 1, 2, 3 s
+    sends.step(0.25);
+  preset("home");  // at 3.25 s: sent at once
+  for (int k = 0; k < 2; ++k)
+    sends.step(0.25);
+  preset("square_center");  // at 3.75 s
+  EXPECT_TRUE(eventually([&] { return sends.ghostStates(t).size() >= 6 && sends.frames(t).size() >= 6; }));
+  return { sends.ghostStates(t), sends.frames(t) };
+}
+
+std::string listed(const std::vector<double>& seconds)
+{
+  std::ostringstream out;
+  for (const double s : seconds)
+    out << s << " ";
+  return out.str();
+}
+}  // namespace
+
+TEST(InteractionPhysics, InLockstepTheGhostIsSentAtTheSimulationsInstants)
+{
+  // Two seeded demos in lockstep recorded 133 and 134 ghost states: the ghost went out on ROS-time timers, which
+  // fire a wall-clock-dependent number of times when /clock jumps. Now at the states' instants: a change at once,
+  // else a keepalive a second after the last send, at the same stamps however fast the steps run.
+  GhostSends sends;
+  call<std_srvs::Empty>("/physics/pause");
+  const auto first = lockstepSequence(sends);
+  const auto second = lockstepSequence(sends);
+  call<std_srvs::Empty>("/physics/unpause");
+  std::cout << "ghost states at " << listed(first.first) << "s, frames at " << listed(first.second)
+            << "s; again: states at " << listed(second.first) << "s, frames at " << listed(second.second) << "s\n";
+  const std::vector<double> expected = { 0.0, 1.0, 2.0, 3.0, 3.25, 3.75 };
+  for (const auto& [what, sent] : { std::make_pair("ghost states", first.first), std::make_pair("frames", first.second),
+                                    std::make_pair("ghost states again", second.first),
+                                    std::make_pair("frames again", second.second) })
+  {
+    ASSERT_EQ(sent.size(), expected.size()) << what << " at " << listed(sent);
+    for (std::size_t k = 0; k < sent.size(); ++k)
+      EXPECT_NEAR(sent[k], expected[k], 1e-6) << what << " " << k;
+  }
 }
 
 int main(int argc, char** argv)
