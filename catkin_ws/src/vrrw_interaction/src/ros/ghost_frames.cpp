@@ -5,6 +5,14 @@
 
 namespace vrrw_interaction
 {
+namespace
+{
+/// rad or m: a joint that moved less since the last send is not sent again before the keepalive (0.1 mm at 1 m,
+/// under a pixel in rviz). A released Robotiq's fingers creep 3e-6 rad over seconds in physics, 4e-8 rad a state:
+/// they sent the frames at every state.
+constexpr double kUnseen = 1e-4;
+}  // namespace
+
 GhostFrames::GhostFrames(WorldView& view, std::vector<GhostInterface*> ghosts) : view_(view), ghosts_(std::move(ghosts))
 {
   ros::NodeHandle nh;
@@ -19,7 +27,7 @@ void GhostFrames::update(const ros::Time& stamp, bool requested)
   Eigen::VectorXd state = view_.liveState();
   for (GhostInterface* ghost : ghosts_)
     ghost->ghostInto(state, stamp);
-  const bool changed = sent_.size() != state.size() || (sent_ - state).cwiseAbs().maxCoeff() >= 1e-9;
+  const bool changed = sent_.size() != state.size() || (sent_ - state).cwiseAbs().maxCoeff() >= kUnseen;
   // a request sends its change at once; tf refuses a frame twice at one stamp (TF_REPEATED_DATA), so a request at
   // the instant the frames were last sent at leaves its change to the next state's instant
   if (!(requested ? changed && (stamp > schedule_.last() || schedule_.due(stamp, true)) : schedule_.due(stamp, changed)))
