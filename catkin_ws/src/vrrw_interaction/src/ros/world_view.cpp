@@ -45,9 +45,10 @@ void WorldView::onJointStates(const sensor_msgs::JointState& msg)
     for (std::size_t i = 0; i < msg.name.size() && i < msg.position.size(); ++i)
       if (const int v = world_.model().variableIndex(msg.name[i]); v >= 0 && std::isfinite(msg.position[i]))
         live_[v] = msg.position[i];
-    if (msg.header.stamp > live_stamp_ || msg.header.stamp + ros::Duration(kClockWentBack) < live_stamp_)
+    const ros::Time& stamp = msg.header.stamp;  // (an unstamped state, say from rostopic pub, is no instant)
+    if (!stamp.isZero() && (stamp > live_stamp_ || stamp + ros::Duration(kClockWentBack) < live_stamp_))
     {
-      live_stamp_ = msg.header.stamp;
+      live_stamp_ = stamp;
       for (const auto& at_instant : at_instant_)
         at_instant(live_stamp_);
     }
