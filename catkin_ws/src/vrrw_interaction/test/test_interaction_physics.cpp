@@ -484,6 +484,15 @@ public:
         out.emplace_back((ghost_states_[k] - from).toSec(), ghost_positions_[k]);
     return out;
   }
+  /// How many ghost states sent after `from` and before `to` have a stamp no /joint_states had.
+  std::size_t offTheStates(const ros::Time& from, const ros::Time& to) const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::size_t off = 0;
+    for (const ros::Time& t : ghost_states_)
+      off += t > from && t < to && std::find(states_at_.begin(), states_at_.end(), t) == states_at_.end() ? 1 : 0;
+    return off;
+  }
   bool stateAt(const ros::Time& t) const
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -565,6 +574,7 @@ std::vector<std::pair<double, std::vector<double>>> previewSequence(const GhostS
     at = sends.step(0.25);
   preset("square_center");
   EXPECT_TRUE(eventually([&] { return !sends.ghostBetween(at - ros::Duration(1e-9), at + ros::Duration(1e-9)).empty(); }));
+  EXPECT_EQ(sends.offTheStates(planned, at), 0u) << "preview states at stamps of no state";
   return sends.ghostBetween(planned, at);
 }
 
