@@ -1,7 +1,8 @@
 // Node test (rostest, real master, real Bullet physics): a scripted hand drags the free-driven UR5e's
 // wrist 20 cm at 0.2 m/s; releasing with rigid drives freezes it; a ghost plan executes within tolerance;
 // a turning hand turns the wrist; a drill taken by the gripper is attached to the ghost's TCP and planned with.
-// In lockstep a ghost plan starts from the state where the simulation waits.
+// In lockstep a ghost plan starts from the state where the simulation waits, and the ghost is sent at the
+// simulation's instants: the same messages at the same stamps however fast the steps run.
 #include <vrrw_common/ros/action_client.h>
 #include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/GripperCommandAction.h>
@@ -16,9 +17,12 @@
 #include <vrrw_msgs/GhostSetPose.h>
 #include <vrrw_msgs/GhostSupportSurface.h>
 #include <std_srvs/Trigger.h>
+#include <tf2_msgs/TFMessage.h>
 #include <vrrw_physics/SetObjectPose.h>
 
+#include <limits>
 #include <map>
+#include <set>
 
 #include "../bench/hand_drag.h"
 #include "interaction_fixture.h"
@@ -438,6 +442,207 @@ TEST(InteractionPhysics, InLockstepAGhostPlanStartsFromTheStateWhereTheSimulatio
   arm.cancelGoal();
   call<std_srvs::Empty>("/physics/unpause");
   EXPECT_EQ(stale, 0) << "plans that started from an older state; the worst " << worst << " rad off the stop";
+}
+
+namespace
+{
+/// The stamps of what the ghost sends (/ur5e/ghost/joint_states, ghost/<link> frames on /tf) and of the states
+/// the simulation publishes (/joint_states).
+class GhostSends
+{
+public:
+  GhostSends()
+    : ghost_(nh->subscribe<sensor_msgs::JointState>("/ur5e/ghost/joint_states", 1000,
+                                                    [this](const sensor_msgs::JointState::ConstPtr& m) {
+                                                      add(ghost_states_, m->header.stamp);
+                                                      std::lock_guard<std::mutex> lock(mutex_);
+                                                      ghost_positions_.push_back(m->position);
+                                                    }))
+    , tf_(nh->subscribe<tf2_msgs::TFMessage>("/tf", 1000, [this](const tf2_msgs::TFMessage::ConstPtr& m) {
+      if (!m->transforms.empty() && m->transforms[0].child_frame_id.rfind("ghost/", 0) == 0)
+        add(frames_, m->transforms[0].header.stamp);
+    }))
+    , states_(nh->subscribe<sensor_msgs::JointState>("/joint_states", 1000,
+                                                     [this](const sensor_msgs::JointState::ConstPtr& m) { add(states_at_, m->header.stamp); }))
+  {
+    // connected to all three before anything counts (the simulation runs: the ghost's keepalive comes within 1 s)
+    EXPECT_TRUE(eventually([&] {
+      std::lock_guard<std::mutex> lock(mutex_);
+      return !ghost_states_.empty() && !frames_.empty() && !states_at_.empty();
+    }));
+  }
+  /// Seconds after `from` of each ghost state (or frames) sent at or after it.
+  std::vector<double> ghostStates(const ros::Time& from) const { return after(ghost_states_, from); }
+  std::vector<double> frames(const ros::Time& from) const { return after(frames_, from); }
+  /// The ghost states sent after `from` and before `to`: s after `from`, and the joints.
+  std::vector<std::pair<double, std::vector<double>>> ghostBetween(const ros::Time& from, const ros::Time& to) const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::pair<double, std::vector<double>>> out;
+    for (std::size_t k = 0; k < ghost_states_.size(); ++k)
+      if (ghost_states_[k] > from && ghost_states_[k] < to)
+        out.emplace_back((ghost_states_[k] - from).toSec(), ghost_positions_[k]);
+    return out;
+  }
+  /// How many ghost states sent after `from` and before `to` have a stamp no /joint_states had.
+  std::size_t offTheStates(const ros::Time& from, const ros::Time& to) const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::size_t off = 0;
+    for (const ros::Time& t : ghost_states_)
+      off += t > from && t < to && std::find(states_at_.begin(), states_at_.end(), t) == states_at_.end() ? 1 : 0;
+    return off;
+  }
+  bool stateAt(const ros::Time& t) const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return std::find(states_at_.begin(), states_at_.end(), t) != states_at_.end();
+  }
+  /// Steps the paused simulation `seconds` as fast as the cores allow and waits for the state where it stops.
+  ros::Time step(double seconds) const
+  {
+    vrrw_physics::Step step;
+    step.request.duration = seconds;
+    step.request.rtf = std::numeric_limits<double>::infinity();
+    step = call("/physics/step", step);
+    EXPECT_TRUE(step.response.success) << step.response.message;
+    EXPECT_TRUE(eventually([&] { return stateAt(step.response.time); }));
+    return step.response.time;
+  }
+
+private:
+  void add(std::vector<ros::Time>& to, const ros::Time& t)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    to.push_back(t);
+  }
+  std::vector<double> after(const std::vector<ros::Time>& sent, const ros::Time& from) const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<double> out;
+    for (const ros::Time& t : sent)
+      if (t >= from)
+        out.push_back((t - from).toSec());
+    return out;
+  }
+
+  mutable std::mutex mutex_;
+  std::vector<ros::Time> ghost_states_, frames_, states_at_;  ///< PROTECTED BY mutex_
+  std::vector<std::vector<double>> ghost_positions_;          ///< PROTECTED BY mutex_: of ghost_states_
+  ros::Subscriber ghost_, tf_, states_;
+};
+
+/// One sequence with the simulation paused: a preset, 0.25 s, another preset (at t), 3.25 s in 13 slices, a
+/// preset, 0.5 s in two slices, a preset (the fence: it arrives after everything sent before it). The ghost
+/// states and frames sent from t on, in s after t.
+void preset(const std::string& name)
+{
+  vrrw_msgs::GhostPreset srv;
+  srv.request.name = name;
+  EXPECT_TRUE(call("/ur5e/ghost/preset", srv).response.success) << name;
+}
+
+std::pair<std::vector<double>, std::vector<double>> lockstepSequence(const GhostSends& sends)
+{
+  preset("home");
+  const ros::Time t = sends.step(0.25);
+  preset("square_center");  // a change at t: sent at once (the frames were last sent 0.25 or 0.24 s before)
+  EXPECT_TRUE(eventually([&] { return sends.ghostStates(t).size() == 1 && sends.frames(t).size() == 1; }))
+      << sends.ghostStates(t).size() << " ghost states, " << sends.frames(t).size() << " frames at once";
+  for (int k = 0; k < 13; ++k)  // the ghost and the arm still for 3.25 s: the keepalives at 1, 2, 3 s
+    sends.step(0.25);
+  preset("home");  // at 3.25 s: sent at once
+  for (int k = 0; k < 2; ++k)
+    sends.step(0.25);
+  preset("square_center");  // at 3.75 s
+  EXPECT_TRUE(eventually([&] { return sends.ghostStates(t).size() >= 6 && sends.frames(t).size() >= 6; }));
+  return { sends.ghostStates(t), sends.frames(t) };
+}
+
+/// With the simulation paused: the ghost to a preset, a plan to it, stepped through its preview in 0.25 s slices, a
+/// preset (the fence). The ghost states the preview sent, in s after the plan, and the joints.
+std::vector<std::pair<double, std::vector<double>>> previewSequence(const GhostSends& sends, double& duration)
+{
+  preset("square_center");
+  const ros::Time planned = sends.step(0.25);
+  preset("home");
+  const auto plan = call<vrrw_msgs::GhostPlan>("/ur5e/ghost/plan");
+  EXPECT_TRUE(plan.response.success) << plan.response.message;
+  duration = plan.response.trajectory.points.empty() ? 0.0 : plan.response.trajectory.points.back().time_from_start.toSec();
+  ros::Time at = planned;
+  while (at < planned + ros::Duration(duration + 0.75))  // the preview, its 0.5 s hold and a slice more
+    at = sends.step(0.25);
+  preset("square_center");
+  EXPECT_TRUE(eventually([&] { return !sends.ghostBetween(at - ros::Duration(1e-9), at + ros::Duration(1e-9)).empty(); }));
+  EXPECT_EQ(sends.offTheStates(planned, at), 0u) << "preview states at stamps of no state";
+  return sends.ghostBetween(planned, at);
+}
+
+std::string listed(const std::vector<double>& seconds)
+{
+  std::ostringstream out;
+  for (const double s : seconds)
+    out << s << " ";
+  return out.str();
+}
+}  // namespace
+
+TEST(InteractionPhysics, InLockstepTheGhostIsSentAtTheSimulationsInstants)
+{
+  // Two seeded demos in lockstep recorded 133 and 134 ghost states: the ghost went out on ROS-time timers, which
+  // fire a wall-clock-dependent number of times when /clock jumps. Now at the states' instants: a change at once,
+  // else a keepalive a second after the last send, at the same stamps however fast the steps run.
+  GhostSends sends;
+  call<std_srvs::Empty>("/physics/pause");
+  const auto first = lockstepSequence(sends);
+  const auto second = lockstepSequence(sends);
+  call<std_srvs::Empty>("/physics/unpause");
+  std::cout << "ghost states at " << listed(first.first) << "s, frames at " << listed(first.second)
+            << "s; again: states at " << listed(second.first) << "s, frames at " << listed(second.second) << "s\n";
+  const std::vector<double> expected = { 0.0, 1.0, 2.0, 3.0, 3.25, 3.75 };
+  for (const auto& [what, sent] : { std::make_pair("ghost states", first.first), std::make_pair("frames", first.second),
+                                    std::make_pair("ghost states again", second.first),
+                                    std::make_pair("frames again", second.second) })
+  {
+    ASSERT_EQ(sent.size(), expected.size()) << what << " at " << listed(sent);
+    for (std::size_t k = 0; k < sent.size(); ++k)
+      EXPECT_NEAR(sent[k], expected[k], 1e-6) << what << " " << k;
+  }
+}
+
+TEST(InteractionPhysics, InLockstepAPlansPreviewIsSentAtTheStatesStamps)
+{
+  GhostSends sends;
+  call<std_srvs::Empty>("/physics/pause");
+  double duration = 0.0, again = 0.0;
+  const auto first = previewSequence(sends, duration);
+  const auto second = previewSequence(sends, again);
+  call<std_srvs::Empty>("/physics/unpause");
+  std::cout << "a " << duration << " s preview sent " << first.size() << " ghost states, again " << second.size() << "\n";
+  ASSERT_GT(duration, 0.1);
+  // at the states' instants (100 Hz here), at most one per 15 ms: every second instant while the ghost moves
+  EXPECT_GE(first.size(), std::size_t(duration / 0.03));
+  EXPECT_LE(first.size(), std::size_t(duration / 0.015) + 2);
+  for (std::size_t k = 1; k < first.size(); ++k)
+    EXPECT_GE(first[k].first - first[k - 1].first, 0.015 - 1e-6) << k;
+  ASSERT_FALSE(first.empty());
+  const std::vector<double> end = { 0, -1.5707963267948966, 0, -1.5707963267948966, 0, 0 };
+  for (std::size_t j = 0; j < end.size(); ++j)  // the last: the plan's end, where the ghost is (home)
+    EXPECT_NEAR(first.back().second[j], end[j], 1e-9) << j;
+  // the same steps again: the same states at the same stamps
+  EXPECT_EQ(duration, again);
+  std::vector<double> at_first, at_second;
+  for (const auto& sent : first)
+    at_first.push_back(sent.first);
+  for (const auto& sent : second)
+    at_second.push_back(sent.first);
+  ASSERT_EQ(first.size(), second.size()) << "at " << listed(at_first) << "s; again at " << listed(at_second) << "s";
+  for (std::size_t k = 0; k < first.size(); ++k)
+  {
+    EXPECT_NEAR(first[k].first, second[k].first, 1e-6) << k;
+    for (std::size_t j = 0; j < end.size(); ++j)
+      EXPECT_NEAR(first[k].second[j], second[k].second[j], 1e-12) << k << " joint " << j;
+  }
 }
 
 int main(int argc, char** argv)

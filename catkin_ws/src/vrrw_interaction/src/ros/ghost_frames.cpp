@@ -5,29 +5,36 @@
 
 namespace vrrw_interaction
 {
+namespace
+{
+/// rad or m: a joint that moved less since the last send is not sent again before the keepalive (0.1 mm at 1 m,
+/// under a pixel in rviz). A released Robotiq's fingers creep 3e-6 rad over seconds in physics, 4e-8 rad a state:
+/// they sent the frames at every state.
+constexpr double kUnseen = 1e-4;
+}  // namespace
+
 GhostFrames::GhostFrames(WorldView& view, std::vector<GhostInterface*> ghosts) : view_(view), ghosts_(std::move(ghosts))
 {
   ros::NodeHandle nh;
   nh.setParam("/ghost_description", ghostDescription(view_.scene()));
-  timer_ = nh.createTimer(ros::Duration(1.0 / 30.0), [this](const ros::TimerEvent&) { tick(); });
+  view_.onInstant([this](const ros::Time& stamp) { update(stamp, false); });
+  for (GhostInterface* ghost : ghosts_)
+    ghost->on_published = [this](const ros::Time& stamp) { update(stamp, true); };
 }
 
-void GhostFrames::tick()
+void GhostFrames::update(const ros::Time& stamp, bool requested)
 {
-  std::lock_guard<std::mutex> lock(view_.mutex());
   Eigen::VectorXd state = view_.liveState();
   for (GhostInterface* ghost : ghosts_)
-    ghost->ghostInto(state);
-  const ros::Time now = ros::Time::now();
-  // tf refuses a frame twice at one stamp (TF_REPEATED_DATA): under sim time, timer events that queued up
-  // fire at one clock reading; the next tick sends the ghost as it is then.
-  if (now <= sent_at_)
+    ghost->ghostInto(state, stamp);
+  const bool changed = sent_.size() != state.size() || (sent_ - state).cwiseAbs().maxCoeff() >= kUnseen;
+  // a request sends its change at once; tf refuses a frame twice at one stamp (TF_REPEATED_DATA), so a request at
+  // the instant the frames were last sent at leaves its change to the next state's instant
+  if (!(requested ? changed && (stamp > schedule_.last() || schedule_.due(stamp, true)) : schedule_.due(stamp, changed)))
     return;
-  if (sent_.size() == state.size() && (sent_ - state).cwiseAbs().maxCoeff() < 1e-9 && now - sent_at_ < ros::Duration(1.0))
-    return;
-  send(state, now);
+  send(state, stamp);
   sent_ = state;
-  sent_at_ = now;
+  schedule_.sent(stamp);
 }
 
 void GhostFrames::send(const Eigen::VectorXd& ghost_state, const ros::Time& stamp)

@@ -34,13 +34,10 @@ GhostInterface::GhostInterface(WorldView& view, const vrrw_scene::Robot& robot, 
   , gripper_action_("/" + robot.name + "/gripper_controller/gripper_cmd")
 {
   ros::NodeHandle nh("/" + robot_ + "/ghost");
-  joint_states_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10, true);
+  // a preview in a lockstep client's step slice (0.25 s) goes out in one burst: up to 17 states, none dropped
+  joint_states_ = nh.advertise<sensor_msgs::JointState>("joint_states", 100, true);
   advertise(nh, execution_queue);
-  // 10 Hz besides every change: a late subscriber, a recorder or rviz gets the ghost while nothing moves
-  keepalive_ = nh.createTimer(ros::Duration(0.1), [this](const ros::TimerEvent&) {
-    std::lock_guard<std::mutex> lock(view_.mutex());
-    publish(ros::Time::now());
-  });
+  view_.onInstant([this](const ros::Time& stamp) { atInstant(stamp); });
 }
 
 void GhostInterface::advertise(ros::NodeHandle& nh, ros::CallbackQueue& execution_queue)
@@ -62,23 +59,35 @@ void GhostInterface::advertise(ros::NodeHandle& nh, ros::CallbackQueue& executio
   services_.push_back(execution.advertiseService("execute", &GhostInterface::onExecute, this));
 }
 
-void GhostInterface::ghostInto(Eigen::VectorXd& state)
+Eigen::VectorXd GhostInterface::joints(const ros::Time& at)
 {
   // while a plan previews, the ghost shows where the robot will be on it (on ROS time: the controller's pace)
-  const std::optional<Eigen::VectorXd> previewed = preview_.at(ros::Time::now().toSec());
-  state = arm_.withJointValues(state, previewed ? *previewed : ghost_.joints());
+  const std::optional<Eigen::VectorXd> previewed = preview_.at(at.toSec());
+  return previewed ? *previewed : ghost_.joints();
 }
 
-void GhostInterface::publish(const ros::Time& stamp)
+void GhostInterface::ghostInto(Eigen::VectorXd& state, const ros::Time& at)
 {
-  Eigen::VectorXd state = view_.liveState();
-  ghostInto(state);
+  state = arm_.withJointValues(state, joints(at));
+}
+
+void GhostInterface::atInstant(const ros::Time& stamp)
+{
+  const Eigen::VectorXd q = joints(stamp);
+  const bool changed = sent_.size() != q.size() || (sent_ - q).cwiseAbs().maxCoeff() > 0.0;
+  if (schedule_.due(stamp, changed))
+    publish(q, stamp, stamp);
+}
+
+void GhostInterface::publish(const Eigen::VectorXd& q, const ros::Time& stamp, const ros::Time& at)
+{
   sensor_msgs::JointState msg;
   msg.header.stamp = stamp;
   msg.name = arm_.jointNames();
-  const Eigen::VectorXd q = arm_.jointValues(state);
   msg.position.assign(q.data(), q.data() + q.size());
   joint_states_.publish(msg);
+  sent_ = q;
+  schedule_.sent(at);
 }
 
 Outcome GhostInterface::drag(const Eigen::Isometry3d& target, const ros::Time& stamp, double max_jump)
@@ -87,7 +96,7 @@ Outcome GhostInterface::drag(const Eigen::Isometry3d& target, const ros::Time& s
   if (outcome.success)
   {
     preview_.stop();
-    publish(stamp);
+    publish(ghost_.joints(), stamp, view_.now());  // (the marker's stamp answers its pose; the schedule keeps ours)
   }
   return outcome;
 }
@@ -100,7 +109,10 @@ Outcome GhostInterface::moved(const Outcome& outcome, const std::string& request
     return outcome;
   }
   preview_.stop();
-  publish(ros::Time::now());
+  const ros::Time now = view_.now();
+  publish(ghost_.joints(), now, now);
+  if (on_published)
+    on_published(now);
   if (on_moved)
     on_moved(tcp());
   return outcome;
@@ -183,7 +195,7 @@ Outcome GhostInterface::plan(double time_limit, trajectory_msgs::JointTrajectory
     ROS_WARN_STREAM("/" << robot_ << "/ghost/plan: " << o.message);
     return o;
   }
-  preview_.play(result.trajectory, ros::Time::now().toSec());
+  preview_.play(result.trajectory, view_.now().toSec());  // (sent at the live states' instants from here)
   if (trajectory)
     *trajectory = vrrw_trajectory::toMsg(result.trajectory);
   const std::string summary = std::to_string(result.trajectory.duration()) + " s through " +

@@ -15,6 +15,11 @@ namespace
 {
 /// Longest wait for the state where the simulation waits: its messages are one publish away (milliseconds).
 constexpr double kCatchUpSeconds = 2.0;
+/// Messages a subscription holds: a lockstep client's step slice (0.25 s: 13 states at 50 Hz, 25 at 100 Hz)
+/// arrives in one burst, and none of it may be dropped (the ghost is sent at the states' instants).
+constexpr int kBurst = 100;
+/// s: a state this much older than the newest is a simulation started again (/physics/reset), not a late one
+constexpr double kClockWentBack = 1.0;
 }  // namespace
 
 WorldView::WorldView(ros::NodeHandle& nh, const vrrw_scene::Scene& scene, std::string mode)
@@ -26,10 +31,10 @@ WorldView::WorldView(ros::NodeHandle& nh, const vrrw_scene::Scene& scene, std::s
 {
   world_.loadOrComputeAllowedCollisions(scene_.cache_dir);
   live_ = vrrw_kinematics::initialState(world_.model(), scene_);
-  joint_states_ = nh.subscribe("/joint_states", 10, &WorldView::onJointStates, this);
+  joint_states_ = nh.subscribe("/joint_states", kBurst, &WorldView::onJointStates, this);
   events_ = nh.advertise<vrrw_msgs::Event>("/operator/events", 100);
   if (mode_ == "physics")
-    contacts_ = nh.subscribe("/physics/contacts", 10, &WorldView::onContacts, this);
+    contacts_ = nh.subscribe("/physics/contacts", kBurst, &WorldView::onContacts, this);
   objects_timer_ = nh.createTimer(ros::Duration(0.1), [this](const ros::TimerEvent&) { refreshObjects(); });
 }
 
@@ -40,7 +45,13 @@ void WorldView::onJointStates(const sensor_msgs::JointState& msg)
     for (std::size_t i = 0; i < msg.name.size() && i < msg.position.size(); ++i)
       if (const int v = world_.model().variableIndex(msg.name[i]); v >= 0 && std::isfinite(msg.position[i]))
         live_[v] = msg.position[i];
-    live_stamp_ = std::max(live_stamp_, msg.header.stamp);
+    const ros::Time& stamp = msg.header.stamp;  // (an unstamped state, say from rostopic pub, is no instant)
+    if (!stamp.isZero() && (stamp > live_stamp_ || stamp + ros::Duration(kClockWentBack) < live_stamp_))
+    {
+      live_stamp_ = stamp;
+      for (const auto& at_instant : at_instant_)
+        at_instant(live_stamp_);
+    }
   }
   arrived_.notify_all();
 }

@@ -1,6 +1,7 @@
 #pragma once
 #include <Eigen/Geometry>
 #include <condition_variable>
+#include <functional>
 #include <geometry_msgs/PoseStamped.h>
 #include <mutex>
 #include <ros/ros.h>
@@ -35,6 +36,14 @@ public:
   /// \brief The world's variables at the last /joint_states (mutex held).
   const Eigen::VectorXd& liveState() const { return live_; }
   std::mutex& mutex() { return mutex_; }
+  /// \brief The newest instant the node knows (mutex held): ROS time now, or the newest state's stamp when that is
+  /// later (in lockstep the state where the simulation waits may arrive before its /clock).
+  ros::Time now() const { return std::max(ros::Time::now(), live_stamp_); }
+  /// \brief `at_instant(stamp)` runs (mutex held) whenever a /joint_states message with a newer stamp than any
+  /// before has been taken into the live state: an instant of the simulation (physics), of a fake controller or
+  /// of scene_node's held states (mode none). What observers get of the ghost is sent at these instants. Register
+  /// before the node spins.
+  void onInstant(std::function<void(const ros::Time& stamp)> at_instant) { at_instant_.push_back(std::move(at_instant)); }
   /// \brief Lockstep (physics held between steps): waits until the live state, the contacts and the objects
   /// are those of the instant the simulation waits at, at most 2 s of wall time, so what is computed from them
   /// does not depend on when messages arrive. Paced or not physics: returns at once. Call it without the mutex.
@@ -63,6 +72,8 @@ private:
   vrrw_kinematics::CollisionWorld world_;  ///< PROTECTED BY mutex_
   Eigen::VectorXd live_;                   ///< PROTECTED BY mutex_
   ros::Time live_stamp_, contacts_stamp_;  ///< PROTECTED BY mutex_: the newest /joint_states, /physics/contacts
+  /// called with mutex_ held; filled before the node spins, only read after
+  std::vector<std::function<void(const ros::Time&)>> at_instant_;
   std::condition_variable arrived_;        ///< with mutex_: a joint state or contacts arrived
   HeldObjects held_;                       ///< PROTECTED BY mutex_ (it changes world_'s attachments)
   tf2_ros::Buffer tf_;                     ///< thread-safe by itself: looked up without mutex_
