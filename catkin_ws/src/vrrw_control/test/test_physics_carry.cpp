@@ -6,6 +6,8 @@
 // as when the gripper closed on nothing. On main before issue 22 this carry ended 7.9 mrad off (the issue's
 // run at rtf 1 aborted: wrist_1 0.0117 rad off, beyond the 0.01 rad goal tolerance).
 #include <vrrw_common/ros/action_client.h>
+
+#include <cmath>
 #include <control_msgs/GripperCommandAction.h>
 #include <gtest/gtest.h>
 #include <tf2_eigen/tf2_eigen.h>
@@ -153,7 +155,17 @@ private:
   Eigen::Vector3d drill()
   {
     const ros::Time now = sim_.now();
-    return tf2::transformToEigen(tf_.lookupTransform("world", "drill", now, ros::Duration(5.0))).translation();
+    // (wall clock: a timeout in simulated time never ends while the simulation waits)
+    for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(5.0);
+         !tf_.canTransform("world", "drill", now) && ros::WallTime::now() < end;)
+      ros::WallDuration(0.002).sleep();
+    if (!tf_.canTransform("world", "drill", now))
+    {
+      ADD_FAILURE() << "no tf of the drill at " << now << " (the newest: "
+                    << tf_.lookupTransform("world", "drill", ros::Time(0)).header.stamp << ")";
+      return Eigen::Vector3d::Constant(std::nan(""));
+    }
+    return tf2::transformToEigen(tf_.lookupTransform("world", "drill", now)).translation();
   }
   /// The arm joints' positions in the state where the simulation waits.
   std::vector<double> arm()

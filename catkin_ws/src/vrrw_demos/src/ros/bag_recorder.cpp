@@ -228,6 +228,7 @@ void BagRecorder::onMessage(const std::string& topic, const ros::MessageEvent<to
     return;
   queue_.push_back(
       { topic, bagTime(event.getReceiptTime()), event.getConstMessage(), event.getConnectionHeaderPtr() });
+  last_message_ = std::chrono::steady_clock::now();
   wake_.notify_one();
 }
 
@@ -301,6 +302,16 @@ uint64_t BagRecorder::stop()
 {
   if (!recording_)
     throw DemoError("not recording");
+  using Clock = std::chrono::steady_clock;
+  const auto quiet = std::chrono::duration<double>(kQuietPeriod);
+  for (const Clock::time_point give_up = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                             std::chrono::duration<double>(kDrainTimeout));
+       Clock::now() < give_up; std::this_thread::sleep_for(std::chrono::milliseconds(5)))
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (Clock::now() - last_message_ >= quiet)
+      break;
+  }
   subscribers_.clear();  // no callback runs after this returns
   {
     std::lock_guard<std::mutex> lock(mutex_);

@@ -1,5 +1,6 @@
 #pragma once
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <deque>
 #include <map>
@@ -26,6 +27,9 @@ namespace vrrw_demos
 /// thread writes. The bag is written as FILE.active and linked to FILE when closed; a chunk is closed
 /// (and so on disk) at least every kFlushPeriod, so a SIGKILL loses at most that much (`rosbag reindex`
 /// restores the index). A write error (disk full) stops the recording, keeps what was written and says so.
+/// stop() first takes what is still on its way (published before the stop, on another connection or callback
+/// thread): it waits until no message came for kQuietPeriod, at most kDrainTimeout. While a lockstep
+/// simulation waits, its topics are quiet, so a seeded run's bag ends with the same message each time.
 ///
 /// Threads: start(), stop(), subscribeNewTopics() and status() run on one thread (the node's spinner);
 /// message callbacks on any; the writer on its own.
@@ -35,6 +39,8 @@ public:
   static constexpr double kFlushPeriod = 0.5;     ///< s between forced chunk ends
   static constexpr uint32_t kQueueSize = 100000;  ///< per topic; at 1 kHz 100 s of backlog
   static constexpr double kConnectTimeout = 2.0;  ///< wall s start() waits for the publishers to reach it
+  static constexpr double kQuietPeriod = 0.05;    ///< wall s without a message after which stop() ends the bag
+  static constexpr double kDrainTimeout = 0.5;    ///< wall s stop() waits at most for that quiet
 
   /// \brief What is being (or was last) recorded.
   struct Status
@@ -85,12 +91,13 @@ private:
   std::vector<std::regex> patterns_;
   std::map<std::string, ros::Subscriber> subscribers_;
   Status status_;             ///< the control thread's view; messages and failure live below
-  std::mutex mutex_;          ///< protects queue_, stopping_, failure_, failure_taken_
+  std::mutex mutex_;          ///< protects queue_, stopping_, failure_, failure_taken_, last_message_
   std::condition_variable wake_;
   std::deque<Queued> queue_;  ///< PROTECTED BY mutex_
   std::thread writer_;
   std::atomic<bool> recording_{ false };
   bool stopping_ = false;      ///< PROTECTED BY mutex_
+  std::chrono::steady_clock::time_point last_message_;  ///< PROTECTED BY mutex_: when the last one arrived
   std::atomic<uint64_t> written_{ 0 };
   std::string failure_;        ///< PROTECTED BY mutex_
   bool failure_taken_ = false; ///< PROTECTED BY mutex_

@@ -31,7 +31,14 @@ HandOperator::HandOperator(ros::NodeHandle& node, const std::string& robot, vrrw
     std::lock_guard<std::mutex> lock(mutex_);
     events_seen_.push_back(e->kind);
   });
-  // what the interaction node makes of the hand: physics gets the stamp of each pose on its spring's target
+  // what the interaction node makes of the hand: physics gets the stamp of each pose, the open hand's on
+  // /physics/hand, the held one's on its spring's target
+  physics_hands_ = node.subscribe<vrrw_physics::Hand>("/physics/hand", 100, [this](const vrrw_physics::Hand::ConstPtr& m) {
+    if (m->id != hand_)
+      return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    hand_at_ = std::max(hand_at_, m->header.stamp);
+  });
   spring_targets_ = node.subscribe<vrrw_physics::SpringTarget>(
       "/physics/spring_target", 100, [this](const vrrw_physics::SpringTarget::ConstPtr& m) {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -47,7 +54,7 @@ bool HandOperator::waitUntilReady(double seconds, std::string& error)
   for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); ros::WallTime::now() < end;
        ros::WallDuration(0.05).sleep())
     if (pose_.getNumSubscribers() > 0 && grip_.getNumSubscribers() > 0 && events_.getNumPublishers() > 0 &&
-        spring_targets_.getNumPublishers() > 0)
+        spring_targets_.getNumPublishers() > 0 && physics_hands_.getNumPublishers() > 0)
       return true;
   return error = "the interaction node did not take the hand " + pose_topic_, false;
 }
@@ -64,44 +71,66 @@ bool HandOperator::setFreeDrive(bool on, std::string& error)
   return true;
 }
 
-void HandOperator::publish(const Eigen::Isometry3d& pose, double grip, const ros::Time& stamp)
+void HandOperator::publish(const Eigen::Isometry3d& pose, const ros::Time& stamp)
 {
   geometry_msgs::PoseStamped msg;
   msg.header.stamp = stamp;
   msg.header.frame_id = "world";
   msg.pose = tf2::toMsg(pose);
   pose_.publish(msg);
+}
+
+void HandOperator::publish(double grip)
+{
   std_msgs::Float64 closed;
   closed.data = grip;
   grip_.publish(closed);
 }
 
-bool HandOperator::holdUntil(const Eigen::Isometry3d& pose, double grip, const std::string& kind, double seconds)
+bool HandOperator::await(const std::function<bool()>& done, double seconds)
 {
+  for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);; ros::WallDuration(0.0005).sleep())
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    events_seen_.clear();
+    if (done())
+      return true;
+    if (ros::WallTime::now() >= end)
+      return false;
   }
-  for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); ros::WallTime::now() < end;
-       ros::WallDuration(0.01).sleep())
+}
+
+bool HandOperator::closeOn(const Eigen::Isometry3d& pose)
+{
+  const auto seen = [this](const std::string& kind) {
+    return std::find(events_seen_.begin(), events_seen_.end(), kind) != events_seen_.end();
+  };
+  for (int attempt = 0; attempt < 3; ++attempt)
   {
-    publish(pose, grip, sim_.time());
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!kind.empty() && std::find(events_seen_.begin(), events_seen_.end(), kind) != events_seen_.end())
+    const ros::Time at = sim_.time();
+    publish(pose, at);  // the hand is there, open
+    publish(0.0);
+    if (!await([&] { return hand_at_ >= at; }, kAnswerSeconds))
+      continue;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      events_seen_.clear();
+    }
+    publish(1.0);
+    if (await([&] { return seen("grab"); }, 1.0))
       return true;
   }
   return false;
 }
 
-bool HandOperator::closeOn(const Eigen::Isometry3d& pose)
+bool HandOperator::open()
 {
-  for (int attempt = 0; attempt < 3; ++attempt)
   {
-    holdUntil(pose, 0.0, "", 0.1);  // the hand is there, open
-    if (holdUntil(pose, 1.0, "grab", 1.0))
-      return true;
+    std::lock_guard<std::mutex> lock(mutex_);
+    events_seen_.clear();
   }
-  return false;
+  publish(0.0);
+  return await([this] { return std::find(events_seen_.begin(), events_seen_.end(), "release") != events_seen_.end(); },
+               1.0);
 }
 
 bool HandOperator::pull(const std::vector<Eigen::Isometry3d>& poses, std::string& error)
@@ -111,16 +140,9 @@ bool HandOperator::pull(const std::vector<Eigen::Isometry3d>& poses, std::string
   {
     const std::size_t end = std::min(poses.size(), k + kSlice);
     for (; k < end; ++k)
-      publish(poses[k], 1.0, start + ros::Duration(double(k + 1) / kRate));
+      publish(poses[k], start + ros::Duration(double(k + 1) / kRate));
     const ros::Time last = start + ros::Duration(double(end) / kRate);
-    bool passed = false;
-    for (const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(kAnswerSeconds);
-         !passed && ros::WallTime::now() < until; ros::WallDuration(0.0005).sleep())
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      passed = spring_target_ >= last;
-    }
-    if (!passed)
+    if (!await([&] { return spring_target_ >= last; }, kAnswerSeconds))
       return error = pose_topic_ + ": the interaction node sent physics no spring target for the hand", false;
     sim_.step((last - sim_.time()).toSec());
   }
@@ -149,7 +171,7 @@ bool HandOperator::freeDrive(const Eigen::Isometry3d& tcp_from, const Eigen::Iso
     return setFreeDrive(false, error), false;
   if (!setFreeDrive(false, error))  // the arm holds where the hand left it
     return false;
-  if (!holdUntil(tcp_to * grab_in_tcp, 0.0, "release", 1.0))
+  if (!open())
     return error = pose_topic_ + ": the hand opened but did not let go", false;
   return true;
 }

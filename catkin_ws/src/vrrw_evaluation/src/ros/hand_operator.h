@@ -5,6 +5,7 @@
 // stamped with when they take effect.
 #include <Eigen/Geometry>
 #include <geometry_msgs/PoseStamped.h>
+#include <functional>
 #include <mutex>
 #include <ros/ros.h>
 #include <std_msgs/Float64.h>
@@ -12,6 +13,7 @@
 #include <utility>
 #include <vector>
 #include <vrrw_msgs/Event.h>
+#include <vrrw_physics/Hand.h>
 #include <vrrw_physics/SpringTarget.h>
 
 #include <vrrw_common/ros/persistent_service.h>
@@ -40,13 +42,18 @@ public:
 
 private:
   bool setFreeDrive(bool on, std::string& error);
-  void publish(const Eigen::Isometry3d& pose, double grip, const ros::Time& stamp);
-  /// While the simulation waits: publishes `pose` stamped where it waits, with `grip`, every 10 ms (wall clock)
-  /// until an /operator/events event of `kind` for this hand, at most `seconds`; true when it came.
-  bool holdUntil(const Eigen::Isometry3d& pose, double grip, const std::string& kind, double seconds);
-  /// The hand closes at `pose` until the interaction node says it grabbed (retried with the hand opened first: a
-  /// grip that arrives before the hand's first pose grabs nothing).
+  void publish(const Eigen::Isometry3d& pose, const ros::Time& stamp);
+  void publish(double grip);
+  /// Waits (wall clock, at most `seconds`) until `done()` holds (mutex_ held while it is asked).
+  bool await(const std::function<bool()>& done, double seconds);
+  /// While the simulation waits, once each: the open hand at `pose` stamped where it waits, until the interaction
+  /// node passed it on to physics (its /physics/hand at that stamp); the grip closes, until the `grab` event
+  /// (retried after opening: once the hand grabs nothing). The interaction node measures a hand's silence in ROS
+  /// time, so a hand that holds still while the simulation waits needs no repeated poses: a lockstep teach sends
+  /// the same messages each time.
   bool closeOn(const Eigen::Isometry3d& pose);
+  /// The hand opens, until the `release` event.
+  bool open();
   /// The hand at `poses`, one every 10 ms of simulated time from where the simulation waits, a slice at a time:
   /// each slice is published stamped ahead of simulated time and stepped once its spring targets reached physics.
   bool pull(const std::vector<Eigen::Isometry3d>& poses, std::string& error);
@@ -59,6 +66,7 @@ private:
   std::mutex mutex_;                      ///< protects the two below
   std::vector<std::string> events_seen_;  ///< PROTECTED BY mutex_: kinds of this hand's /operator/events
   ros::Time spring_target_;  ///< PROTECTED BY mutex_: the latest stamp the interaction node sent to physics
-  ros::Subscriber events_, spring_targets_;
+  ros::Time hand_at_;        ///< PROTECTED BY mutex_: the latest stamp of this hand on /physics/hand
+  ros::Subscriber events_, spring_targets_, physics_hands_;
 };
 }  // namespace vrrw_evaluation

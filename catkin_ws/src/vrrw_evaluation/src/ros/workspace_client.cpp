@@ -1,5 +1,7 @@
 #include "workspace_client.h"
 
+#include <std_srvs/Trigger.h>
+
 #include <tf2_eigen/tf2_eigen.h>
 #include <cstdio>
 #include <stdexcept>
@@ -323,6 +325,10 @@ Recording WorkspaceClient::stopRecording()
   std::uint64_t demos_messages = 0;
   if (demos_recording_)
   {
+    // the interaction node takes the states in bursts and may be behind: what it sends up to this instant (the
+    // ghost, the hands' markers) belongs in the bag
+    std_srvs::Trigger sync;
+    links_.tryCall("/interaction/sync", sync);
     vrrw_msgs::DemoStop stop;
     if (links_.tryCall("/demos/stop", stop) && stop.response.success)
       demos_messages = stop.response.messages;

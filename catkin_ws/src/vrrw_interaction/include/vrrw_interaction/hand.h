@@ -22,6 +22,8 @@ public:
   /// \brief A new pose (world) at time `t` (s).
   void setPose(const Eigen::Isometry3d& pose, double t);
   bool hasPose() const { return has_pose_; }
+  /// \brief The time of the last pose (setPose's `t`).
+  double poseTime() const { return stamp_; }
   const Eigen::Isometry3d& pose() const { return pose_; }
   /// \brief True when the last pose is older than `timeout` at `now` (or there is none).
   bool stale(double now, double timeout = 0.5) const { return !has_pose_ || now - stamp_ > timeout; }

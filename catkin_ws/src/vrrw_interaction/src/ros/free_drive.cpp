@@ -10,6 +10,12 @@ namespace vrrw_interaction
 {
 namespace
 {
+/// s of ROS time between the hands' markers (20 Hz: a viewer's rate)
+constexpr double kMarkerPeriod = 0.05;
+/// poses of a hand not yet shown (a script sends at most a step slice ahead; a tracker's own clock far ahead of
+/// the simulation's is not kept beyond this)
+constexpr std::size_t kMaxArriving = 1000;
+
 std::string describe(const Eigen::Vector3d& p)
 {
   char buffer[96];
@@ -18,16 +24,18 @@ std::string describe(const Eigen::Vector3d& p)
 }
 
 /// A hand in rviz: darker when closed, faint when its tracker went silent.
-visualization_msgs::Marker handMarker(const Hand& hand, const std::string& frame, int id, double radius, double now)
+visualization_msgs::Marker handMarker(const Hand& hand, bool closed, const std::string& frame, int id, double radius,
+                                      double now)
 {
   visualization_msgs::Marker sphere;
   sphere.header.frame_id = frame;
+  sphere.header.stamp = ros::Time(now);  // the instant it shows
   sphere.ns = "hands", sphere.id = id;
   sphere.type = visualization_msgs::Marker::SPHERE;
   sphere.pose = tf2::toMsg(hand.pose());
   sphere.scale.x = sphere.scale.y = sphere.scale.z = 2 * radius;
   sphere.color.a = hand.stale(now) ? 0.2f : 0.8f;
-  sphere.color.r = 0.95f, sphere.color.g = hand.closed() ? 0.3f : 0.75f, sphere.color.b = 0.5f;
+  sphere.color.r = 0.95f, sphere.color.g = closed ? 0.3f : 0.75f, sphere.color.b = 0.5f;
   sphere.lifetime = ros::Duration(0.5);
   return sphere;
 }
@@ -55,9 +63,10 @@ FreeDrive::FreeDrive(WorldView& view, std::vector<GhostInterface*> arms, double 
           return true;
         }));
   }
-  hand_markers_ = nh.advertise<visualization_msgs::MarkerArray>("/operator/hands", 1);
+  hand_markers_ = nh.advertise<visualization_msgs::MarkerArray>("/operator/hands", 100);  // a burst of instants taken late
   discover_timer_ = nh.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) { discoverHands(); });
-  tick_timer_ = nh.createWallTimer(ros::WallDuration(0.05), [this](const ros::WallTimerEvent&) { tick(); });
+  view_.onInstant([this](const ros::Time& now) { atInstant(now); });
+  release_timer_ = nh.createWallTimer(ros::WallDuration(0.05), [this](const ros::WallTimerEvent&) { releaseStale(); });
 }
 
 Outcome FreeDrive::set(const std::string& robot, bool on)
@@ -117,7 +126,13 @@ void FreeDrive::onPose(Tracker& tracker, const geometry_msgs::PoseStamped& msg)
     return;
   }
   std::lock_guard<std::mutex> lock(view_.mutex());
-  tracker.hand.setPose(pose, ros::WallTime::now().toSec());
+  // the pose's own time when it is one of ours (a script stamps its hand ahead of the simulation): a lockstep run
+  // marks and times out the hand at the same instants each time; else when it came
+  const ros::Time now = view_.now(), stamp = msg.header.stamp;
+  const bool own = !stamp.isZero() && std::abs((stamp - now).toSec()) < 1.0;
+  tracker.hand.setPose(pose, (own ? stamp : now).toSec());
+  if (tracker.arriving.size() < kMaxArriving)
+    tracker.arriving.emplace(tracker.hand.poseTime(), pose);
   if (tracker.hand.held())
     return follow(tracker, msg.header.stamp);
   if (view_.mode() != "physics")
@@ -126,7 +141,7 @@ void FreeDrive::onPose(Tracker& tracker, const geometry_msgs::PoseStamped& msg)
   if (!tracker.pushes)
     tracker.pushes = clearOfMovingBodies(view_.world(), view_.scene(), view_.liveState(), pose.translation(),
                                          hand_radius_ + 0.01);
-  physics_.hand(tracker.hand.id(), pose, tracker.pushes ? hand_radius_ : 0.0);
+  physics_.hand(tracker.hand.id(), pose, tracker.pushes ? hand_radius_ : 0.0, msg.header.stamp);
 }
 
 void FreeDrive::onGrip(Tracker& tracker, const std_msgs::Float64& msg)
@@ -137,6 +152,7 @@ void FreeDrive::onGrip(Tracker& tracker, const std_msgs::Float64& msg)
     return;
   }
   std::optional<GrabTarget> taken, let_go;
+  view_.catchUp();  // lockstep: grab from the state where the simulation waits, not one a message behind
   {
     std::lock_guard<std::mutex> lock(view_.mutex());
     const Hand::GripChange change = tracker.hand.setGrip(msg.data);
@@ -167,7 +183,7 @@ std::optional<GrabTarget> FreeDrive::grab(Tracker& tracker)
     tracker.tcp_at_grab = tcpPose(arms_[target->robot]->arm(), view_.liveState());
   tracker.hand.hold(*target);
   tracker.pushes = false;
-  physics_.hand(tracker.hand.id(), tracker.hand.pose(), 0.0);
+  physics_.hand(tracker.hand.id(), tracker.hand.pose(), 0.0, view_.now());
   return target;
 }
 
@@ -217,7 +233,8 @@ void FreeDrive::follow(Tracker& tracker, const ros::Time& stamp)
     return;
   }
   // fake mode: the arm in free-drive follows the hand kinematically, at most 50 commands a second
-  if (held.robot.empty() || !active_.count(held.robot) || ros::WallTime::now() - tracker.last_command < ros::WallDuration(0.02))
+  const ros::Time now = view_.now();
+  if (held.robot.empty() || !active_.count(held.robot) || now - tracker.last_command < ros::Duration(0.02))
     return;
   vrrw_kinematics::Arm& arm = arms_[held.robot]->arm();
   const vrrw_kinematics::IkResult ik = armFollowingHand(arm, tracker.hand, tracker.tcp_at_grab, view_.liveState());
@@ -232,31 +249,44 @@ void FreeDrive::follow(Tracker& tracker, const ros::Time& stamp)
   command.points[0].positions.assign(ik.q.data(), ik.q.data() + ik.q.size());
   command.points[0].time_from_start = ros::Duration(0.05);
   commands_[held.robot].publish(command);
-  tracker.last_command = ros::WallTime::now();
+  tracker.last_command = now;
 }
 
-void FreeDrive::tick()
+void FreeDrive::atInstant(const ros::Time& now)
 {
-  std::vector<std::pair<Tracker*, GrabTarget>> stale;  // let go: their springs are released below
+  const double t = now.toSec();
+  visualization_msgs::MarkerArray markers;
+  for (auto& [id, tracker] : trackers_)
+  {
+    auto& arriving = tracker->arriving;
+    for (auto p = arriving.begin(); p != arriving.end() && p->first < t; p = arriving.erase(p))
+      tracker->shown.setPose(p->second, p->first);
+    const Hand& shown = tracker->shown;
+    if (tracker->hand.held() && shown.stale(t))
+      stale_.emplace_back(tracker.get(), release(*tracker));
+    if (tracker->pushes && shown.stale(t, 0.4))  // take the sphere away before physics has to
+    {
+      physics_.hand(id, shown.pose(), 0.0, now);
+      tracker->pushes = false;
+    }
+    if (shown.hasPose())
+      markers.markers.push_back(handMarker(shown, tracker->hand.closed(), view_.world().model().links()[0].name,
+                                           int(markers.markers.size()), hand_radius_, t));
+  }
+  // (recordings keep /operator/*: no empty arrays)
+  if (!markers.markers.empty() && (markers_at_.isZero() || (now - markers_at_).toSec() >= kMarkerPeriod - 1e-9))
+  {
+    hand_markers_.publish(markers);
+    markers_at_ = now;
+  }
+}
+
+void FreeDrive::releaseStale()
+{
+  std::vector<std::pair<Tracker*, GrabTarget>> stale;
   {
     std::lock_guard<std::mutex> lock(view_.mutex());
-    visualization_msgs::MarkerArray markers;
-    const double now = ros::WallTime::now().toSec();
-    for (auto& [id, tracker] : trackers_)
-    {
-      if (tracker->hand.held() && tracker->hand.stale(now))
-        stale.emplace_back(tracker.get(), release(*tracker));
-      if (tracker->pushes && tracker->hand.stale(now, 0.4))  // take the sphere away before physics has to
-      {
-        physics_.hand(id, tracker->hand.pose(), 0.0);
-        tracker->pushes = false;
-      }
-      if (tracker->hand.hasPose())
-        markers.markers.push_back(handMarker(tracker->hand, view_.world().model().links()[0].name,
-                                             int(markers.markers.size()), hand_radius_, now));
-    }
-    if (!markers.markers.empty())  // (recordings keep /operator/*: no empty arrays at 20 Hz)
-      hand_markers_.publish(markers);
+    stale.swap(stale_);
   }
   for (const auto& [tracker, held] : stale)
   {

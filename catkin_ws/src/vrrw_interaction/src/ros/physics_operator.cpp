@@ -69,21 +69,26 @@ void PhysicsOperator::release(const std::string& id, const std::string& body)
     ROS_WARN_STREAM("/physics/set_spring release " << id << ": " << srv.response.message);
 }
 
+ros::Time PhysicsOperator::applied(const ros::Time& stamp)
+{
+  // A script that steps the simulation sends its hand ahead of simulated time (at most a step slice): its stamps
+  // make the pull deterministic. A person's tracker is at most a few ms off; a second is neither.
+  return stamp <= ros::Time::now() + ros::Duration(1.0) ? stamp : ros::Time();
+}
+
 void PhysicsOperator::moveTarget(const std::string& id, const Eigen::Isometry3d& target, const ros::Time& stamp)
 {
   vrrw_physics::SpringTarget msg;
-  // A script that steps the simulation sends its hand ahead of simulated time (at most a step slice): its stamps
-  // make the pull deterministic. A person's tracker is at most a few ms off; a second is neither.
-  if (stamp <= ros::Time::now() + ros::Duration(1.0))
-    msg.header.stamp = stamp;
+  msg.header.stamp = applied(stamp);
   msg.id = id;
   msg.target = tf2::toMsg(target);
   spring_target_.publish(msg);
 }
 
-void PhysicsOperator::hand(const std::string& id, const Eigen::Isometry3d& pose, double radius)
+void PhysicsOperator::hand(const std::string& id, const Eigen::Isometry3d& pose, double radius, const ros::Time& stamp)
 {
   vrrw_physics::Hand msg;
+  msg.header.stamp = applied(stamp);
   msg.id = id;
   msg.pose = tf2::toMsg(pose);
   msg.radius = radius;

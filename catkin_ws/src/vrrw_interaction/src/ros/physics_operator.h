@@ -37,10 +37,12 @@ public:
   /// first step at or after it; zero or past: before the next step). A stamp more than a second ahead of ROS time
   /// (a tracker on a clock of its own) is sent as zero, so physics never holds it back for long.
   void moveTarget(const std::string& id, const Eigen::Isometry3d& target, const ros::Time& stamp = ros::Time());
-  /// \brief Hand `id` as a pushing sphere of `radius` at `pose` (0: none).
-  void hand(const std::string& id, const Eigen::Isometry3d& pose, double radius);
+  /// \brief Hand `id` as a pushing sphere of `radius` at `pose` (0: none), at `stamp` as moveTarget's.
+  void hand(const std::string& id, const Eigen::Isometry3d& pose, double radius, const ros::Time& stamp);
 
 private:
+  /// The stamp physics gets: `stamp`, or zero (at once) when it is more than a second ahead of ROS time.
+  static ros::Time applied(const ros::Time& stamp);
   SpringGains gains_;
   ros::Publisher spring_target_, hand_;
 };

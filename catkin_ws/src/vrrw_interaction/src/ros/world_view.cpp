@@ -4,6 +4,7 @@
 #include <vrrw_kinematics/ik_solver.h>
 #include <vrrw_kinematics/scene_state.h>
 #include <vrrw_msgs/Event.h>
+#include <std_srvs/Trigger.h>
 #include <vrrw_physics/Step.h>
 
 #include <chrono>
@@ -15,9 +16,10 @@ namespace
 {
 /// Longest wait for the state where the simulation waits: its messages are one publish away (milliseconds).
 constexpr double kCatchUpSeconds = 2.0;
-/// Messages a subscription holds: a lockstep client's step slice (0.25 s: 13 states at 50 Hz, 25 at 100 Hz)
-/// arrives in one burst, and none of it may be dropped (the ghost is sent at the states' instants).
-constexpr int kBurst = 100;
+/// Messages a subscription holds: at rtf max the states come in bursts (a lockstep client's slices, one after the
+/// other) and this node may fall behind by many; none may be dropped (the ghost and the hands' markers are sent at
+/// the states' instants). As physics_node's publishers: 20 s of states at 50 Hz.
+constexpr int kBurst = 1000;
 /// s: a state this much older than the newest is a simulation started again (/physics/reset), not a late one
 constexpr double kClockWentBack = 1.0;
 }  // namespace
@@ -36,10 +38,19 @@ WorldView::WorldView(ros::NodeHandle& nh, const vrrw_scene::Scene& scene, std::s
   if (mode_ == "physics")
     contacts_ = nh.subscribe("/physics/contacts", kBurst, &WorldView::onContacts, this);
   objects_timer_ = nh.createTimer(ros::Duration(0.1), [this](const ros::TimerEvent&) { refreshObjects(); });
+  // answered once every state up to where a lockstep simulation waits is taken, and so what this node sends at
+  // those instants is sent: a client that stops a recording there calls it first
+  sync_ = nh.advertiseService<std_srvs::Trigger::Request, std_srvs::Trigger::Response>(
+      "/interaction/sync", [this](std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+        catchUp();
+        res.success = true;
+        return true;
+      });
 }
 
 void WorldView::onJointStates(const sensor_msgs::JointState& msg)
 {
+  std::vector<HeldEvent> events;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     for (std::size_t i = 0; i < msg.name.size() && i < msg.position.size(); ++i)
@@ -49,11 +60,24 @@ void WorldView::onJointStates(const sensor_msgs::JointState& msg)
     if (!stamp.isZero() && (stamp > live_stamp_ || stamp + ros::Duration(kClockWentBack) < live_stamp_))
     {
       live_stamp_ = stamp;
+      if (mode_ == "physics")
+      {
+        recent_states_[stamp] = live_;
+        while (recent_states_.size() > std::size_t(kBurst))
+          recent_states_.erase(recent_states_.begin());
+        for (auto c = early_contacts_.begin(); c != early_contacts_.end() && c->first <= stamp;)
+        {
+          for (HeldEvent& e : takeContacts(c->first, c->second, live_))
+            events.push_back(std::move(e));
+          c = early_contacts_.erase(c);
+        }
+      }
       for (const auto& at_instant : at_instant_)
         at_instant(live_stamp_);
     }
   }
   arrived_.notify_all();
+  publish(events);
 }
 
 void WorldView::catchUp()
@@ -124,15 +148,28 @@ void WorldView::onContacts(const vrrw_physics::Contacts& msg)
   std::vector<HeldEvent> events;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    contacts_stamp_ = std::max(contacts_stamp_, msg.header.stamp);
-    for (const vrrw_scene::Object& object : scene_.objects)
-      if (!object.fixed)
-        for (HeldEvent& e : held_.update(object.name, held_.squeezedBy(object.name, contacts, live_), live_,
-                                         ros::Time::now().toSec()))
-          events.push_back(std::move(e));
+    const ros::Time& stamp = msg.header.stamp;
+    contacts_stamp_ = std::max(contacts_stamp_, stamp);
+    if (const auto state = recent_states_.find(stamp); state != recent_states_.end())
+      events = takeContacts(stamp, contacts, state->second);
+    else if (stamp > live_stamp_ && early_contacts_.size() < std::size_t(kBurst))
+      early_contacts_[stamp] = std::move(contacts);  // taken with its state (onJointStates)
+    else
+      events = takeContacts(stamp, contacts, live_);  // its state never came: the newest there is
   }
   arrived_.notify_all();
   publish(events);
+}
+
+std::vector<HeldEvent> WorldView::takeContacts(const ros::Time& stamp, const std::vector<BodyContact>& contacts,
+                                               const Eigen::VectorXd& state)
+{
+  std::vector<HeldEvent> events;
+  for (const vrrw_scene::Object& object : scene_.objects)
+    if (!object.fixed)
+      for (HeldEvent& e : held_.update(object.name, held_.squeezedBy(object.name, contacts, state), state, stamp.toSec()))
+        events.push_back(std::move(e));
+  return events;
 }
 
 void WorldView::publish(const std::vector<HeldEvent>& events)

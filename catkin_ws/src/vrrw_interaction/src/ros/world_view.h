@@ -2,6 +2,7 @@
 #include <Eigen/Geometry>
 #include <condition_variable>
 #include <functional>
+#include <map>
 #include <geometry_msgs/PoseStamped.h>
 #include <mutex>
 #include <ros/ros.h>
@@ -65,6 +66,9 @@ private:
   /// \brief 10 Hz: free objects where tf has them; fake mode: who holds what by the closed grippers.
   void refreshObjects(const ros::Time& at = ros::Time(0));
   void publish(const std::vector<HeldEvent>& events);
+  /// \brief Who holds what by `contacts` of instant `stamp`, with the joint state of that instant (mutex held).
+  std::vector<HeldEvent> takeContacts(const ros::Time& stamp, const std::vector<BodyContact>& contacts,
+                                      const Eigen::VectorXd& state);
 
   const vrrw_scene::Scene scene_;
   const std::string mode_;
@@ -76,12 +80,17 @@ private:
   std::vector<std::function<void(const ros::Time&)>> at_instant_;
   std::condition_variable arrived_;        ///< with mutex_: a joint state or contacts arrived
   HeldObjects held_;                       ///< PROTECTED BY mutex_ (it changes world_'s attachments)
+  // Contacts and joint states of one instant come on two connections, in either order: each contacts message is
+  // taken with the state of its own instant, so who holds what does not depend on which came first.
+  std::map<ros::Time, Eigen::VectorXd> recent_states_;                 ///< PROTECTED BY mutex_: by stamp, bounded
+  std::map<ros::Time, std::vector<BodyContact>> early_contacts_;  ///< PROTECTED BY mutex_: before their state
   tf2_ros::Buffer tf_;                     ///< thread-safe by itself: looked up without mutex_
   tf2_ros::TransformListener listener_;
   ros::Subscriber joint_states_, contacts_;
   std::mutex step_mutex_;
   ros::ServiceClient step_;  ///< PROTECTED BY step_mutex_: /physics/step asked where the simulation waits
   ros::Publisher events_;
+  ros::ServiceServer sync_;  ///< /interaction/sync: catchUp() for a client (a recorder about to stop)
   ros::Timer objects_timer_;
 };
 }  // namespace vrrw_interaction

@@ -16,6 +16,9 @@ namespace
 {
 /// Most stamped inputs waiting for their time: a flood of future stamps is refused, not stored.
 constexpr std::size_t kMaxPendingInput = 10000;
+/// Messages an observer may fall behind on each topic (20 s of states at 50 Hz): at rtf max a slow observer gets
+/// every one, later, so what it counts is the same each run.
+constexpr std::uint32_t kObserverQueue = 1000;
 /// Longest /physics/step request (simulated s).
 constexpr double kMaxStep = 600.0;
 /// Wall s: paced, the steps run in bursts of about this long, then wait once. One wake-up per 1 ms step cost
@@ -47,15 +50,16 @@ PhysicsNode::PhysicsNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const vrrw_s
 {
   // Latched, as /clock: a node that connects while the simulation waits gets where and when it waits.
   for (const std::string& robot : world_.robotNames())
-    robot_states_.push_back(nh.advertise<sensor_msgs::JointState>(robot + "/joint_states", 100, true));
+    robot_states_.push_back(nh.advertise<sensor_msgs::JointState>(robot + "/joint_states", kObserverQueue, true));
   if (options.robot_tf && !scene.robots.empty())
   {
     const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(scene.urdf);  // PhysicsWorld parsed it already
     for (const std::string& robot : world_.robotNames())
       robot_frames_.emplace_back(*model, world_.jointStates(robot).name);
   }
-  all_states_ = nh.advertise<sensor_msgs::JointState>("joint_states", 100, true);
-  contacts_ = pnh.advertise<Contacts>("contacts", 100);  // a lockstep client's step slice (0.25 s) in a burst, none dropped
+  all_states_ = nh.advertise<sensor_msgs::JointState>("joint_states", kObserverQueue, true);
+  contacts_ = pnh.advertise<Contacts>("contacts", kObserverQueue);
+  tf_ = nh.advertise<tf2_msgs::TFMessage>("/tf", kObserverQueue);  // (tf2_ros' broadcaster queues 100)
   errors_ = pnh.advertise<std_msgs::String>("errors", 10, true);
   clock_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10, true);
   subscribers_.push_back(pnh.subscribe("hand", 100, &PhysicsNode::onHand, this));
@@ -224,7 +228,7 @@ void PhysicsNode::publishStates()
   sensor_msgs::JointState all;
   all.header.stamp = now;
   // one tf message per state: the robots' moving frames (robot_state_publisher's part) and the objects'
-  std::vector<geometry_msgs::TransformStamped> frames;
+  tf2_msgs::TFMessage frames;
   const auto robots = world_.robotNames();
   for (std::size_t r = 0; r < robots.size(); ++r)
   {
@@ -234,13 +238,13 @@ void PhysicsNode::publishStates()
     append(msg, all);
     if (r < robot_frames_.size())
       for (const JointFrames::Frame& f : robot_frames_[r].at(states.position))
-        frames.push_back(toTransform(f.pose, f.parent, f.child, now));
+        frames.transforms.push_back(toTransform(f.pose, f.parent, f.child, now));
   }
   all_states_.publish(all);
   for (const std::string& object : world_.objectNames())
-    frames.push_back(toTransform(world_.objectPose(object), "world", object, now));
-  if (!frames.empty())
-    tf_.sendTransform(frames);
+    frames.transforms.push_back(toTransform(world_.objectPose(object), "world", object, now));
+  if (!frames.transforms.empty())
+    tf_.publish(frames);
   contacts_.publish(toMsg(world_.contacts(), now));
 }
 

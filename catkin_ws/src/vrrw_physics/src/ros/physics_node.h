@@ -11,7 +11,7 @@
 
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
-#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include <atomic>
 #include <condition_variable>
@@ -96,9 +96,8 @@ private:
   std::vector<ros::Publisher> robot_states_;
   std::vector<JointFrames> robot_frames_;  ///< per robot, beside robot_states_; empty without robot_tf
   std::vector<ros::Subscriber> subscribers_;
-  ros::Publisher all_states_, contacts_, errors_, clock_;
+  ros::Publisher all_states_, contacts_, errors_, clock_, tf_;
   std::vector<ros::ServiceServer> services_;
-  tf2_ros::TransformBroadcaster tf_;
 
   std::mutex step_mutex_;
   std::condition_variable step_done_;
