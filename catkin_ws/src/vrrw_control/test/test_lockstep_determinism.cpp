@@ -1,10 +1,13 @@
 // Node test (rostest, real master): two physics nodes of pick_place_drill, one at rtf max and one paced at
 // real time (rtf 1), each with its controller inside in lockstep, get the same commands at the same simulated
 // times (goals stamped while paused, the simulation stepped until the controllers are idle); every joint state
-// they publish is bit-identical.
+// they publish is bit-identical, and so is the number of action status messages (their heartbeat runs on the
+// controllers' clock, simulated time, not on the wall clock that lets a paced run send 15 times as many).
 #include <vrrw_common/ros/action_client.h>
 #include <control_msgs/GripperCommandAction.h>
+#include <actionlib_msgs/GoalStatusArray.h>
 #include <gtest/gtest.h>
+#include <atomic>
 #include <set>
 
 #include "lockstep_client.h"
@@ -25,11 +28,26 @@ struct Cell
     , gripper(ns + "/ur5e/gripper_controller/gripper_cmd")
     , states(nh, ns + "/ur5e/joint_states")
   {
+    for (const char* action : { "/ur5e/arm_controller/follow_joint_trajectory", "/ur5e/gripper_controller/gripper_cmd" })
+      status_subs.push_back(nh.subscribe<actionlib_msgs::GoalStatusArray>(
+          ns + action + "/status", 1000, [this](const actionlib_msgs::GoalStatusArray::ConstPtr&) { ++statuses; }));
+  }
+  /// Status messages of both actions once they stopped coming (wall clock: those on their way arrive).
+  int settledStatuses()
+  {
+    for (int last = -1; last != statuses;)
+    {
+      last = statuses;
+      ros::WallDuration(0.3).sleep();
+    }
+    return statuses;
   }
   Lockstep sim;
   ArmClient arm;
   GripperClient gripper;
   JointStateLog states;
+  std::vector<ros::Subscriber> status_subs;
+  std::atomic<int> statuses{ 0 };
 };
 
 /// The script: three arm goals (stamped now, 0.2 s ahead, and a one-point goal timed by the controller), the
@@ -87,7 +105,9 @@ TEST(LockstepDeterminism, TwoRunsAtDifferentRatesGiveBitIdenticalJointTrajectori
   const ros::WallTime t0 = ros::WallTime::now();
   runScript(fast);
   const double fast_wall = (ros::WallTime::now() - t0).toSec();
+  const int fast_statuses = fast.settledStatuses();
   runScript(paced);
+  const int paced_statuses = paced.settledStatuses();
   const auto a = fast.states.since(ros::Time(0)), b = paced.states.since(ros::Time(0));
   ASSERT_FALSE(a.empty());
   std::cout << "rtf max: " << a.size() << " joint states, " << (a.back().header.stamp - a.front().header.stamp).toSec()
@@ -110,6 +130,13 @@ TEST(LockstepDeterminism, TwoRunsAtDifferentRatesGiveBitIdenticalJointTrajectori
   std::cout << differing << " of " << a.size() << " joint states differ" << std::endl;
   EXPECT_EQ(differing, 0u);
   EXPECT_GT(a.size(), 400u);
+  // two actions, a heartbeat each per 0.2 s of simulated time, besides each goal's transitions
+  const double simulated = (a.back().header.stamp - a.front().header.stamp).toSec();
+  std::cout << "action status messages: " << fast_statuses << " at rtf max, " << paced_statuses << " at rtf 1 ("
+            << simulated << " simulated s)" << std::endl;
+  EXPECT_EQ(fast_statuses, paced_statuses);
+  EXPECT_GE(fast_statuses, int(2 * simulated / 0.2));
+  EXPECT_LE(fast_statuses, int(2 * simulated / 0.2) + 30);
 }
 
 int main(int argc, char** argv)
