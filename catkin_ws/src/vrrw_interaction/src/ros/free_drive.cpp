@@ -132,7 +132,7 @@ void FreeDrive::onPose(Tracker& tracker, const geometry_msgs::PoseStamped& msg)
   const bool own = !stamp.isZero() && std::abs((stamp - now).toSec()) < 1.0;
   tracker.hand.setPose(pose, (own ? stamp : now).toSec());
   if (tracker.arriving.size() < kMaxArriving)
-    tracker.arriving.emplace(tracker.hand.poseTime(), pose);
+    tracker.arriving[tracker.hand.poseTime()] = pose;  // (the newest of one time)
   if (tracker.hand.held())
     return follow(tracker, msg.header.stamp);
   if (view_.mode() != "physics")
