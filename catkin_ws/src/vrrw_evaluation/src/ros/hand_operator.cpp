@@ -99,38 +99,27 @@ bool HandOperator::await(const std::function<bool()>& done, double seconds)
   }
 }
 
-bool HandOperator::closeOn(const Eigen::Isometry3d& pose)
-{
-  const auto seen = [this](const std::string& kind) {
-    return std::find(events_seen_.begin(), events_seen_.end(), kind) != events_seen_.end();
-  };
-  for (int attempt = 0; attempt < 3; ++attempt)
-  {
-    const ros::Time at = sim_.time();
-    publish(pose, at);  // the hand is there, open
-    publish(0.0);
-    if (!await([&] { return hand_at_ >= at; }, kAnswerSeconds))
-      continue;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      events_seen_.clear();
-    }
-    publish(1.0);
-    if (await([&] { return seen("grab"); }, 1.0))
-      return true;
-  }
-  return false;
-}
-
-bool HandOperator::open()
+bool HandOperator::gripUntil(double grip, const std::string& kind)
 {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     events_seen_.clear();
   }
-  publish(0.0);
-  return await([this] { return std::find(events_seen_.begin(), events_seen_.end(), "release") != events_seen_.end(); },
-               1.0);
+  publish(grip);
+  return await([&] { return std::find(events_seen_.begin(), events_seen_.end(), kind) != events_seen_.end(); }, 1.0);
+}
+
+bool HandOperator::closeOn(const Eigen::Isometry3d& pose)
+{
+  for (int attempt = 0; attempt < 3; ++attempt)
+  {
+    const ros::Time at = sim_.time();
+    publish(pose, at);  // the hand is there, open
+    publish(0.0);
+    if (await([&] { return hand_at_ >= at; }, kAnswerSeconds) && gripUntil(1.0, "grab"))
+      return true;
+  }
+  return false;
 }
 
 bool HandOperator::pull(const std::vector<Eigen::Isometry3d>& poses, std::string& error)
@@ -171,7 +160,7 @@ bool HandOperator::freeDrive(const Eigen::Isometry3d& tcp_from, const Eigen::Iso
     return setFreeDrive(false, error), false;
   if (!setFreeDrive(false, error))  // the arm holds where the hand left it
     return false;
-  if (!open())
+  if (!gripUntil(0.0, "release"))  // the hand opens
     return error = pose_topic_ + ": the hand opened but did not let go", false;
   return true;
 }

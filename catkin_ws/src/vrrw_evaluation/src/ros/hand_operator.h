@@ -52,8 +52,8 @@ private:
   /// time, so a hand that holds still while the simulation waits needs no repeated poses: a lockstep teach sends
   /// the same messages each time.
   bool closeOn(const Eigen::Isometry3d& pose);
-  /// The hand opens, until the `release` event.
-  bool open();
+  /// The hand's grip set to `grip`, until this hand's /operator/events event of `kind` (at most 1 s, wall clock).
+  bool gripUntil(double grip, const std::string& kind);
   /// The hand at `poses`, one every 10 ms of simulated time from where the simulation waits, a slice at a time:
   /// each slice is published stamped ahead of simulated time and stepped once its spring targets reached physics.
   bool pull(const std::vector<Eigen::Isometry3d>& poses, std::string& error);
