@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The one setup step of vrrw, used by ./vrrw setup, docker/Dockerfile and CI:
-# installs the Debian packages in docker/packages.txt and a venv holding xacro; `--tests` adds what only the
+# installs the Debian packages in docker/packages.txt (without their recommended packages: on a bare Debian 12,
+# 662 packages and 345 MB to fetch instead of 872 and 444 MB; nothing vrrw runs needs the others) and a venv holding xacro; `--tests` adds what only the
 # tests use (./vrrw test passes it), so the first `./vrrw demo` does not wait for it.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -15,7 +16,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
   echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}" >&2
   $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >&2
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
 fi
 
 venv="$root/.venv"
