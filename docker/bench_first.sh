@@ -1,22 +1,16 @@
 #!/usr/bin/env bash
-# `./vrrw bench first [--mirror URL] [--keep]`: the README's first command on a bare Debian 12, timed. Without a
-# Docker engine: a minimal Debian 12 (debootstrap --variant=minbase bookworm) in a folder under /var/tmp, given git
-# and ca-certificates to clone this repository's committed HEAD and nothing else, then `./vrrw demo` run in it
-# (chroot) from the first line to the report. Prints each line with its second, then a JSON line: the packages,
-# the configure and build, the evaluation, the total. Needs root and debootstrap; Ctrl-C unmounts and removes it
-# all (--keep leaves the folder for a look). The host's name and resolver are copied in, as an installed system
-# has them, and the host's own CA certificates (a proxy's), so apt and pip reach their servers as the host does.
+# `./vrrw bench first [--mirror URL] [--keep]` (./vrrw checks the options, then runs this with MIRROR and KEEP,
+# 1 or empty): the README's first command on a bare Debian 12, timed. Without a Docker engine: a minimal Debian 12
+# (debootstrap --variant=minbase bookworm) in a folder under /var/tmp, given git and ca-certificates to clone this
+# repository's committed HEAD and nothing else, then `./vrrw demo` run in it (chroot) from the first line to the
+# report. Prints each line with its second, then a JSON line: the packages, the configure and build, the
+# evaluation, the total. Needs root and debootstrap; Ctrl-C unmounts and removes it all (KEEP leaves the folder for
+# a look). The host's name and resolver are copied in, as an installed system has them, and the host's own CA
+# certificates (a proxy's), so apt and pip reach their servers as the host does.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-mirror=http://deb.debian.org/debian keep=""
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --mirror) [ $# -ge 2 ] || { echo "vrrw: bench first: --mirror needs a URL" >&2; exit 2; }; mirror=$2; shift 2 ;;
-    --keep) keep=1; shift ;;
-    *) echo "vrrw: bench first: unknown argument '$1' (--mirror URL, --keep)" >&2; exit 2 ;;
-  esac
-done
-[[ "$mirror" =~ ^https?://[A-Za-z0-9._:/-]+$ ]] || { echo "vrrw: bench first: --mirror: '$mirror' is not an http(s) URL" >&2; exit 2; }
+mirror=$1 keep=${2:-}
+load() { cut -d ' ' -f 1-3 /proc/loadavg; }
 [ "$(id -u)" -eq 0 ] || { echo "vrrw: bench first: needs root (debootstrap, mount, chroot)" >&2; exit 2; }
 command -v debootstrap >/dev/null || { echo "vrrw: bench first: needs debootstrap (apt-get install debootstrap)" >&2; exit 2; }
 git -C "$root" rev-parse --verify -q HEAD >/dev/null || { echo "vrrw: bench first: $root: no commit to clone" >&2; exit 2; }
@@ -30,11 +24,11 @@ cleanup() {
 trap cleanup EXIT
 trap 'exit 130' INT TERM
 
-echo "bench first: a bare Debian 12 in $sys ($mirror), load $(cut -d ' ' -f 1-3 /proc/loadavg)" >&2
+echo "bench first: a bare Debian 12 in $sys ($mirror), load $(load)" >&2
 debootstrap --variant=minbase bookworm "$sys" "$mirror" >"$dir/debootstrap.log" 2>&1 \
   || { tail -n 5 "$dir/debootstrap.log" >&2; echo "vrrw: bench first: debootstrap failed (log above)" >&2; exit 1; }
 printf 'deb %s bookworm main\ndeb %s bookworm-updates main\ndeb %s-security bookworm-security main\n' \
-  "$mirror" "$mirror" "${mirror%/debian}/debian" >"$sys/etc/apt/sources.list"
+  "$mirror" "$mirror" "$mirror" >"$sys/etc/apt/sources.list"
 cp /etc/resolv.conf /etc/hosts "$sys/etc/"
 mount -t proc proc "$sys/proc" && mount --rbind /sys "$sys/sys" && mount --rbind /dev "$sys/dev"
 chroot "$sys" /bin/sh -c 'apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends git ca-certificates' \
@@ -44,7 +38,8 @@ if compgen -G "/usr/local/share/ca-certificates/*.crt" >/dev/null; then
   chroot "$sys" update-ca-certificates >/dev/null 2>&1
 fi
 git clone -q "$root" "$sys/root/vrrw"
-echo "bench first: $(git -C "$sys/root/vrrw" log -1 --format=%h) cloned; ./vrrw demo starts" >&2
+commit=$(git -C "$sys/root/vrrw" log -1 --format=%h)
+echo "bench first: $commit cloned; ./vrrw demo starts" >&2
 
 # The command, each line with the seconds since its start; the parts from the lines that end them.
 log=$dir/first.log
@@ -64,6 +59,6 @@ packages=$(at 'setup: ready') built=$(at 'demo: .0/4. bringing up') report=$(at 
 trials=$(grep -o 'skill [0-9]* of [0-9]* trials succeeded' "$log" | grep -o '[0-9]* of [0-9]*' || echo none)
 [ "$status" -eq 0 ] || echo "vrrw: bench first: ./vrrw demo failed (exit $status; its output above)" >&2
 printf '{"commit": "%s", "status": %d, "packages_s": %s, "configure_and_build_s": %s, "evaluation_s": %s, "total_s": %s, "trials": "%s", "target_s": 480, "load": "%s"}\n' \
-  "$(git -C "$sys/root/vrrw" log -1 --format=%h)" "$status" "${packages:-null}" "$(minus "$built" "$packages")" \
-  "$(minus "$report" "$built")" "$total" "$trials" "$(cut -d ' ' -f 1-3 /proc/loadavg)"
+  "$commit" "$status" "${packages:-null}" "$(minus "$built" "$packages")" \
+  "$(minus "$report" "$built")" "$total" "$trials" "$(load)"
 exit "$status"
