@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The one setup step of vrrw, used by ./vrrw setup, docker/Dockerfile and CI:
 # installs the Debian packages in docker/packages.txt, without their recommended packages (on a bare Debian 12:
-# 662 packages and 345 MB to fetch instead of 872 and 444 MB; nothing vrrw runs needs the others), and a venv
+# 560 packages and 288 MB to fetch instead of 872 and 444 MB; nothing vrrw runs needs the others), and a venv
 # holding xacro; `--tests` adds what only the tests use (./vrrw test passes it), so the first `./vrrw demo` does
 # not wait for it.
 set -euo pipefail
