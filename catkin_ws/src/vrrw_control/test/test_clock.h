@@ -18,7 +18,7 @@ namespace vrrw_control_test
 /// Turns Nagle's algorithm off on every TCP socket of this process. roscpp sets TCP_NODELAY on a publisher's side
 /// only when the subscriber asks (TransportHints().tcpNoDelay()), and the /clock subscription roscpp makes itself
 /// for /use_sim_time never asks: each tick then waited in the kernel for the ACK of the one before (fake_mode's
-/// interpolant case took 85.7 s instead of 47.2 s).
+/// interpolant case took 85.9 s instead of 47.0 s).
 inline void noDelayOnEverySocket()
 {
   DIR* fds = opendir("/proc/self/fd");
