@@ -55,7 +55,9 @@ struct PlanResult
 /// \brief Geometric motion planning for one joint group with OMPL, the other robots and objects frozen.
 ///
 /// Motions are checked at a resolution such that no point of a moving body travels more than
-/// `resolution` metres between two checked states (per-joint reach bounds, see StateChecker::reach()).
+/// `resolution` metres between two checked states (per-joint reach bounds, see StateChecker::reach()); in
+/// between, a motion may graze something by up to half of that (SegmentChecker), as MoveIt's discrete
+/// motion checks may: pad the scene's objects by that much where a graze matters.
 /// Continuous joints have no limits: they take any value, and plan within pi of their start value.
 class MotionPlanner
 {
@@ -84,6 +86,8 @@ public:
   /// \brief Collision state of the group at q (limits not checked).
   Contact check(const Eigen::VectorXd& q) { return checker_.check(q); }
   bool stateValid(const Eigen::VectorXd& q);
+  /// \brief The longest travel (m) of any point between two checked states (SegmentChecker).
+  double resolution() const { return segments_.resolution(); }
   /// \brief Number of steps the straight segment a-b is checked in (SegmentChecker::steps).
   std::size_t segmentSteps(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const { return segments_.steps(a, b); }
   /// \brief SegmentChecker::valid: every step of the straight segment a-b (b included, a not).
