@@ -56,8 +56,8 @@ struct PlanResult
 ///
 /// Motions are checked at a resolution such that no point of a moving body travels more than
 /// `resolution` metres between two checked states (per-joint reach bounds, see StateChecker::reach()); in
-/// between, a motion may graze something by up to half of that (SegmentChecker), as MoveIt's discrete
-/// motion checks may: pad the scene's objects by that much where a graze matters.
+/// between, a motion may graze something, half of that deep past a face (SegmentChecker gives the bounds),
+/// as MoveIt's discrete motion checks may: pad the scene's objects where a graze matters.
 /// Continuous joints have no limits: they take any value, and plan within pi of their start value.
 class MotionPlanner
 {
