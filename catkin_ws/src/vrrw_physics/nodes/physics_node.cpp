@@ -2,7 +2,8 @@
 // loaded into it (lockstep), at a real-time factor; wires it to ROS (src/ros/physics_node.h).
 //   publishes  /<robot>/joint_states, /joint_states (all robots), one tf message (the robots' moving joints'
 //              frames unless ~robot_tf is false, world -> <object>), ~contacts at ~publish_rate; /clock at ~clock_rate; ~errors (std_msgs/String, latched)
-//   subscribes ~hand (vrrw_physics/Hand), ~spring_target (vrrw_physics/SpringTarget): applied at header.stamp
+//   subscribes ~hand (vrrw_physics/Hand), ~spring_target (vrrw_physics/SpringTarget): applied at header.stamp;
+//              each acknowledged on ~input_queued (std_msgs/Header, "hand <id>" / "spring_target <id>", its stamp)
 //   services   ~pause ~unpause (std_srvs/Empty), ~step (vrrw_physics/Step), ~reset (std_srvs/Trigger),
 //              ~set_mode, ~set_gains, ~set_spring, ~set_object_pose (vrrw_physics/*)
 #include <vrrw_scene/scene_loader.h>

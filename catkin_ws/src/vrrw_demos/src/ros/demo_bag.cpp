@@ -176,9 +176,10 @@ void readTrack(rosbag::Bag& bag, const std::string& path, const BagMetadata& met
 
   rosbag::View goals(bag, rosbag::TopicQuery("/" + track.robot + "/gripper_controller/gripper_cmd/goal"));
   for (const rosbag::MessageInstance& message : goals)
-    if (const auto goal = message.instantiate<control_msgs::GripperCommandActionGoal>())
-      track.gripper_goals.push_back(
-          { message.getTime().toSec() - start, goal->goal.command.position, goal->goal.command.max_effort });
+    if (const auto goal = message.instantiate<control_msgs::GripperCommandActionGoal>())  // when it was sent, not
+      track.gripper_goals.push_back({ (goal->header.stamp.isZero() ? message.getTime() : goal->header.stamp).toSec() -
+                                          start,  // when it happened to reach the recorder
+                                      goal->goal.command.position, goal->goal.command.max_effort });
 }
 }  // namespace
 

@@ -2,6 +2,7 @@
 #include "workspace_client.h"
 
 #include <algorithm>
+#include <std_msgs/Header.h>
 #include <std_srvs/SetBool.h>
 #include <tf2_eigen/tf2_eigen.h>
 #include <vrrw_evaluation/pick_place_task.h>
@@ -31,19 +32,15 @@ HandOperator::HandOperator(ros::NodeHandle& node, const std::string& robot, vrrw
     std::lock_guard<std::mutex> lock(mutex_);
     events_seen_.push_back(e->kind);
   });
-  // what the interaction node makes of the hand: physics gets the stamp of each pose, the open hand's on
-  // /physics/hand, the held one's on its spring's target
-  physics_hands_ = node.subscribe<vrrw_physics::Hand>("/physics/hand", 100, [this](const vrrw_physics::Hand::ConstPtr& m) {
-    if (m->id != hand_)
-      return;
+  // what the interaction node makes of the hand, once physics has it queued (the relayed message seen here may
+  // still be on its way to physics): the open hand on /physics/hand, the held one on its spring's target
+  inputs_queued_ = node.subscribe<std_msgs::Header>("/physics/input_queued", 100, [this](const std_msgs::Header::ConstPtr& m) {
     std::lock_guard<std::mutex> lock(mutex_);
-    hand_at_ = std::max(hand_at_, m->header.stamp);
+    if (m->frame_id == "hand " + hand_)
+      hand_at_ = std::max(hand_at_, m->stamp);
+    else if (m->frame_id.rfind("spring_target ", 0) == 0)
+      spring_target_ = std::max(spring_target_, m->stamp);
   });
-  spring_targets_ = node.subscribe<vrrw_physics::SpringTarget>(
-      "/physics/spring_target", 100, [this](const vrrw_physics::SpringTarget::ConstPtr& m) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        spring_target_ = std::max(spring_target_, m->header.stamp);
-      });
 }
 
 bool HandOperator::waitUntilReady(double seconds, std::string& error)
@@ -54,7 +51,7 @@ bool HandOperator::waitUntilReady(double seconds, std::string& error)
   for (const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds); ros::WallTime::now() < end;
        ros::WallDuration(0.05).sleep())
     if (pose_.getNumSubscribers() > 0 && grip_.getNumSubscribers() > 0 && events_.getNumPublishers() > 0 &&
-        spring_targets_.getNumPublishers() > 0 && physics_hands_.getNumPublishers() > 0)
+        inputs_queued_.getNumPublishers() > 0)
       return true;
   return error = "the interaction node did not take the hand " + pose_topic_, false;
 }
@@ -132,7 +129,7 @@ bool HandOperator::pull(const std::vector<Eigen::Isometry3d>& poses, std::string
       publish(poses[k], start + ros::Duration(double(k + 1) / kRate));
     const ros::Time last = start + ros::Duration(double(end) / kRate);
     if (!await([&] { return spring_target_ >= last; }, kAnswerSeconds))
-      return error = pose_topic_ + ": the interaction node sent physics no spring target for the hand", false;
+      return error = pose_topic_ + ": physics got no spring target for the hand (from the interaction node)", false;
     sim_.step((last - sim_.time()).toSec());
   }
   return true;

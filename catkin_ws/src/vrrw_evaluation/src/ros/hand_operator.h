@@ -13,8 +13,6 @@
 #include <utility>
 #include <vector>
 #include <vrrw_msgs/Event.h>
-#include <vrrw_physics/Hand.h>
-#include <vrrw_physics/SpringTarget.h>
 
 #include <vrrw_common/ros/persistent_service.h>
 #include <vrrw_physics/ros/lockstep_client.h>
@@ -47,7 +45,7 @@ private:
   /// Waits (wall clock, at most `seconds`) until `done()` holds (mutex_ held while it is asked).
   bool await(const std::function<bool()>& done, double seconds);
   /// While the simulation waits, once each: the open hand at `pose` stamped where it waits, until the interaction
-  /// node passed it on to physics (its /physics/hand at that stamp); the grip closes, until the `grab` event
+  /// node passed it on to physics (queued there: /physics/input_queued); the grip closes, until the `grab` event
   /// (retried after opening: once the hand grabs nothing). The interaction node measures a hand's silence in ROS
   /// time, so a hand that holds still while the simulation waits needs no repeated poses: a lockstep teach sends
   /// the same messages each time.
@@ -55,7 +53,8 @@ private:
   /// The hand's grip set to `grip`, until this hand's /operator/events event of `kind` (at most 1 s, wall clock).
   bool gripUntil(double grip, const std::string& kind);
   /// The hand at `poses`, one every 10 ms of simulated time from where the simulation waits, a slice at a time:
-  /// each slice is published stamped ahead of simulated time and stepped once its spring targets reached physics.
+  /// each slice is published stamped ahead of simulated time and stepped once physics has queued its spring
+  /// targets (/physics/input_queued).
   bool pull(const std::vector<Eigen::Isometry3d>& poses, std::string& error);
 
   std::string robot_, hand_, pose_topic_, grip_topic_;
@@ -65,8 +64,8 @@ private:
   vrrw_common::PersistentServices links_;
   std::mutex mutex_;                      ///< protects the two below
   std::vector<std::string> events_seen_;  ///< PROTECTED BY mutex_: kinds of this hand's /operator/events
-  ros::Time spring_target_;  ///< PROTECTED BY mutex_: the latest stamp the interaction node sent to physics
-  ros::Time hand_at_;        ///< PROTECTED BY mutex_: the latest stamp of this hand on /physics/hand
-  ros::Subscriber events_, spring_targets_, physics_hands_;
+  ros::Time spring_target_;  ///< PROTECTED BY mutex_: the latest spring target stamp physics has queued
+  ros::Time hand_at_;        ///< PROTECTED BY mutex_: the latest stamp of this hand physics has queued
+  ros::Subscriber events_, inputs_queued_;
 };
 }  // namespace vrrw_evaluation

@@ -60,6 +60,7 @@ void WorldView::onJointStates(const sensor_msgs::JointState& msg)
     if (!stamp.isZero() && (stamp > live_stamp_ || stamp + ros::Duration(kClockWentBack) < live_stamp_))
     {
       live_stamp_ = stamp;
+      live_nsec_ = stamp.toNSec();
       if (mode_ == "physics")
       {
         recent_states_[stamp] = live_;
@@ -218,8 +219,18 @@ void WorldView::allowPlaceContact(const std::string& robot, const std::string& s
   held_.allowPlaceContact(robot, surface, allow);
 }
 
+void WorldView::awaitClock() const
+{
+  ros::Time instant;
+  instant.fromNSec(live_nsec_);
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
+  while (ros::Time::now() < instant && std::chrono::steady_clock::now() < end && ros::ok())
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
 void WorldView::event(const std::string& robot, const std::string& kind, const std::string& detail)
 {
+  awaitClock();
   vrrw_msgs::Event msg;
   msg.header.stamp = ros::Time::now();
   msg.source = "interaction";

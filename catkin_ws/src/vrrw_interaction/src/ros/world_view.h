@@ -1,5 +1,7 @@
 #pragma once
 #include <Eigen/Geometry>
+#include <atomic>
+#include <cstdint>
 #include <condition_variable>
 #include <functional>
 #include <map>
@@ -40,6 +42,10 @@ public:
   /// \brief The newest instant the node knows (mutex held): ROS time now, or the newest state's stamp when that is
   /// later (in lockstep the state where the simulation waits may arrive before its /clock).
   ros::Time now() const { return std::max(ros::Time::now(), live_stamp_); }
+  /// \brief Waits (at most 0.5 s of wall time, with or without the mutex) until the ROS clock reached the newest
+  /// state's stamp: in lockstep that state, where the simulation waits, may arrive before its /clock, and what
+  /// this node stamps with the ROS clock (events, actionlib goals) must carry that instant on every run.
+  void awaitClock() const;
   /// \brief `at_instant(stamp)` runs (mutex held) whenever a /joint_states message with a newer stamp than any
   /// before has been taken into the live state: an instant of the simulation (physics), of a fake controller or
   /// of scene_node's held states (mode none). What observers get of the ghost is sent at these instants. Register
@@ -76,6 +82,7 @@ private:
   vrrw_kinematics::CollisionWorld world_;  ///< PROTECTED BY mutex_
   Eigen::VectorXd live_;                   ///< PROTECTED BY mutex_
   ros::Time live_stamp_, contacts_stamp_;  ///< PROTECTED BY mutex_: the newest /joint_states, /physics/contacts
+  std::atomic<std::uint64_t> live_nsec_{ 0 };  ///< live_stamp_, for awaitClock() without the mutex
   /// called with mutex_ held; filled before the node spins, only read after
   std::vector<std::function<void(const ros::Time&)>> at_instant_;
   std::condition_variable arrived_;        ///< with mutex_: a joint state or contacts arrived

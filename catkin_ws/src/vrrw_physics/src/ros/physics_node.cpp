@@ -2,6 +2,7 @@
 #include "physics_node.h"
 
 #include <rosgraph_msgs/Clock.h>
+#include <std_msgs/Header.h>
 #include <std_msgs/String.h>
 
 #include <urdf_parser/urdf_parser.h>
@@ -62,6 +63,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle& nh, ros::NodeHandle& pnh, const vrrw_s
   tf_ = nh.advertise<tf2_msgs::TFMessage>("/tf", kObserverQueue);  // (tf2_ros' broadcaster queues 100)
   errors_ = pnh.advertise<std_msgs::String>("errors", 10, true);
   clock_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10, true);
+  input_queued_ = pnh.advertise<std_msgs::Header>("input_queued", 100);
   subscribers_.push_back(pnh.subscribe("hand", 100, &PhysicsNode::onHand, this));
   subscribers_.push_back(pnh.subscribe("spring_target", 100, &PhysicsNode::onSpringTarget, this));
   advertiseServices(pnh);
@@ -274,6 +276,7 @@ void PhysicsNode::onHand(const HandConstPtr& m)
     atStamp(m->header.stamp, [this, m, pose] {
       guarded("hand", [&] { world_.operatorInput().setHand(m->id, pose, m->radius); });
     });
+    acknowledge("hand " + m->id, m->header.stamp);
   });
 }
 
@@ -284,6 +287,15 @@ void PhysicsNode::onSpringTarget(const SpringTargetConstPtr& m)
     atStamp(m->header.stamp, [this, m, target] {
       guarded("spring_target", [&] { world_.operatorInput().moveSpring(m->id, target, toEigen(m->velocity)); });
     });
+    acknowledge("spring_target " + m->id, m->header.stamp);
   });
+}
+
+void PhysicsNode::acknowledge(const std::string& what, const ros::Time& stamp)
+{
+  std_msgs::Header queued;
+  queued.stamp = stamp;
+  queued.frame_id = what;
+  input_queued_.publish(queued);
 }
 }  // namespace vrrw_physics

@@ -97,6 +97,11 @@ private:
   std::vector<JointFrames> robot_frames_;  ///< per robot, beside robot_states_; empty without robot_tf
   std::vector<ros::Subscriber> subscribers_;
   ros::Publisher all_states_, contacts_, errors_, clock_, tf_;
+  /// ~input_queued (std_msgs/Header): each hand or spring target once it is queued here, frame_id "hand <id>"
+  /// or "spring_target <id>", stamp its own: a lockstep client that waits for it before stepping past the stamp
+  /// knows physics applies it there (a message seen on the input topic itself may still be on its way here).
+  ros::Publisher input_queued_;
+  void acknowledge(const std::string& what, const ros::Time& stamp);
   std::vector<ros::ServiceServer> services_;
 
   std::mutex step_mutex_;
