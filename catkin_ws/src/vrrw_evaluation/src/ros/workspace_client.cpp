@@ -215,6 +215,7 @@ bool WorkspaceClient::grip(double position, double max_effort, std::string& erro
   control_msgs::GripperCommandGoal goal;
   goal.command.position = position;
   goal.command.max_effort = max_effort;
+  sim_.awaitClock();  // the goal's stamp (the ROS clock) is what a demonstration's learner reads
   gripper_.sendGoal(goal);
   if (!vrrw_physics::waitUntilAccepted(gripper_, kAnswerSeconds))
     return gripper_.cancelGoal(), error = "gripper: the controller did not take the goal within 10 s", false;

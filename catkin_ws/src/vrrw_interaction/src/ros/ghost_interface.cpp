@@ -229,7 +229,8 @@ Outcome GhostInterface::gripper(bool close)
     return { false, "/" + robot_ + "/gripper_controller/gripper_cmd is not running" };
   control_msgs::GripperCommandGoal goal;
   goal.command.position = close ? gripper_->closed : gripper_->open;
-  view_.awaitClock();  // actionlib stamps the goal with the ROS clock: the instant the simulation waits at
+  view_.catchUp();     // lockstep: the state where the simulation waits,
+  view_.awaitClock();  // and its instant on the ROS clock, which actionlib stamps the goal with
   std::lock_guard<std::mutex> lock(view_.mutex());  // (the simple client is not thread-safe; sending never waits)
   gripper_action_.sendGoal(goal);
   view_.event(robot_, close ? "gripper_close" : "gripper_open", "");

@@ -315,6 +315,8 @@ void WorkspaceArm::grip(const std::string& instruction, double position, double 
   control_msgs::GripperCommandGoal goal;
   goal.command.position = position;
   goal.command.max_effort = max_effort;
+  if (sim_)
+    sim_->awaitClock();  // the goal's stamp is the ROS clock: the instant the simulation waits at
   gripper_.sendGoal(goal);
   if (sim_)
     stepUntilDone(gripper_, instruction, "gripper", kResultMargin);

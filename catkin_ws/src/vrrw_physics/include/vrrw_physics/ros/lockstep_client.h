@@ -66,6 +66,10 @@ public:
   void removeStopObserver(int key);
   /// \brief The simulated time of the last answer.
   ros::Time time() const { return time_; }
+  /// \brief Waits (at most 0.5 s of wall time; /clock needs a spinner thread) until this process' ROS clock
+  /// reached time(): what it then stamps with the ROS clock (an actionlib goal, an event) carries the instant
+  /// the simulation waits at on every run, not a /clock still on its way.
+  void awaitClock() const;
 
 private:
   /// One /physics/step call; true when every controller was idle at its end.
