@@ -1,6 +1,7 @@
 #include "world_view.h"
 
 #include <tf2_eigen/tf2_eigen.h>
+#include <vrrw_common/ros/clock.h>
 #include <vrrw_kinematics/ik_solver.h>
 #include <vrrw_kinematics/scene_state.h>
 #include <vrrw_msgs/Event.h>
@@ -223,9 +224,7 @@ void WorldView::awaitClock() const
 {
   ros::Time instant;
   instant.fromNSec(live_nsec_);
-  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
-  while (ros::Time::now() < instant && std::chrono::steady_clock::now() < end && ros::ok())
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  vrrw_common::awaitClock(instant);
 }
 
 void WorldView::event(const std::string& robot, const std::string& kind, const std::string& detail)

@@ -4,8 +4,6 @@
 #include <vrrw_physics/Step.h>
 
 #include <algorithm>
-#include <chrono>
-#include <thread>
 
 namespace vrrw_physics
 {
@@ -63,13 +61,6 @@ void LockstepClient::removeStopObserver(int key)
 {
   observers_.erase(std::remove_if(observers_.begin(), observers_.end(), [key](const auto& o) { return o.first == key; }),
                    observers_.end());
-}
-
-void LockstepClient::awaitClock() const
-{
-  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
-  while (ros::Time::now() < time_ && std::chrono::steady_clock::now() < end && ros::ok())
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
 }
 
 ros::Time LockstepClient::now()

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include <vrrw_common/ros/clock.h>
 #include <vrrw_common/ros/persistent_service.h>
 
 namespace vrrw_physics
@@ -66,10 +67,9 @@ public:
   void removeStopObserver(int key);
   /// \brief The simulated time of the last answer.
   ros::Time time() const { return time_; }
-  /// \brief Waits (at most 0.5 s of wall time; /clock needs a spinner thread) until this process' ROS clock
-  /// reached time(): what it then stamps with the ROS clock (an actionlib goal, an event) carries the instant
-  /// the simulation waits at on every run, not a /clock still on its way.
-  void awaitClock() const;
+  /// \brief Waits (at most 0.5 s of wall time) until this process' ROS clock reached time(): what it then
+  /// stamps with the ROS clock (an actionlib goal) carries the instant the simulation waits at on every run.
+  void awaitClock() const { vrrw_common::awaitClock(time_); }
 
 private:
   /// One /physics/step call; true when every controller was idle at its end.
