@@ -175,10 +175,11 @@ void readTrack(rosbag::Bag& bag, const std::string& path, const BagMetadata& met
   fillVelocities(track, has_velocity);
 
   rosbag::View goals(bag, rosbag::TopicQuery("/" + track.robot + "/gripper_controller/gripper_cmd/goal"));
+  // a goal's time: when it was sent (its stamp), not when it happened to reach the recorder
   for (const rosbag::MessageInstance& message : goals)
-    if (const auto goal = message.instantiate<control_msgs::GripperCommandActionGoal>())  // when it was sent, not
+    if (const auto goal = message.instantiate<control_msgs::GripperCommandActionGoal>())
       track.gripper_goals.push_back({ (goal->header.stamp.isZero() ? message.getTime() : goal->header.stamp).toSec() -
-                                          start,  // when it happened to reach the recorder
+                                          start,
                                       goal->goal.command.position, goal->goal.command.max_effort });
 }
 }  // namespace
