@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <netinet/in.h>
-#include <set>
+#include <map>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -62,15 +62,20 @@ std::vector<double> markerLatency(ros::NodeHandle& nh, tf2_ros::Buffer& tf, int 
   ros::WallDuration(0.5).sleep();
   const Eigen::Isometry3d tcp = tf2::transformToEigen(tf.lookupTransform("world", "ghost/ur5e_tcp", ros::Time(0), ros::Duration(5.0)));
   std::mutex mutex;
-  std::set<ros::Time> sent;
+  // sent feedback by its stamp (which the ghost's answer carries), with the wall time it left: latency is wall
+  // time, whether this process runs on the simulation's clock or not (it reads /use_sim_time as it starts)
+  std::map<ros::Time, ros::WallTime> sent;
   std::vector<double> latencies;
   ros::Subscriber sub = nh.subscribe<sensor_msgs::JointState>(
       "/ur5e/ghost/joint_states", 1000,
       [&](const sensor_msgs::JointStateConstPtr& m) {
-        const ros::Time now = ros::Time::now();
+        const ros::WallTime now = ros::WallTime::now();
         std::lock_guard<std::mutex> lock(mutex);
-        if (sent.erase(m->header.stamp))
-          latencies.push_back((now - m->header.stamp).toSec() * 1e3);
+        if (const auto it = sent.find(m->header.stamp); it != sent.end())
+        {
+          latencies.push_back((now - it->second).toSec() * 1e3);
+          sent.erase(it);
+        }
       },
       ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
   ros::Publisher pub = nh.advertise<visualization_msgs::InteractiveMarkerFeedback>("/interaction/feedback", 100);
@@ -91,7 +96,7 @@ std::vector<double> markerLatency(ros::NodeHandle& nh, tf2_ros::Buffer& tf, int 
     f.header.stamp = ros::Time::now();
     {
       std::lock_guard<std::mutex> lock(mutex);
-      sent.insert(f.header.stamp);
+      sent[f.header.stamp] = ros::WallTime::now();
     }
     pub.publish(f);
     tick += ros::WallDuration(0.01);
